@@ -1,0 +1,14 @@
+package io.github.jdem846.cli;
+
+import picocli.CommandLine.Option;
+
+/** {@code --verbose}: print stack traces of failures (mix into every subcommand). */
+public final class VerboseOption {
+    @Option(names = "--verbose", description = "Print the full stack trace when something fails.")
+    boolean verbose;
+
+    /** True when {@code --verbose} was given. */
+    public boolean isVerbose() {
+        return verbose;
+    }
+}

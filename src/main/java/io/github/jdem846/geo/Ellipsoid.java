@@ -1,0 +1,102 @@
+package io.github.jdem846.geo;
+
+/**
+ * A reference ellipsoid (or sphere) of revolution, with the radii of curvature needed to turn angular cell sizes
+ * into metres.
+ *
+ * @param name              a human-readable name, e.g. "WGS 84"
+ * @param semiMajorAxis     equatorial radius a, in metres; positive and finite
+ * @param inverseFlattening 1/f; {@code Double.POSITIVE_INFINITY} (or 0, as EPSG writes it) for a sphere
+ */
+public record Ellipsoid(String name, double semiMajorAxis, double inverseFlattening) {
+
+    /** WGS 84, the default when a geographic grid names no ellipsoid. */
+    public static final Ellipsoid WGS84 = new Ellipsoid("WGS 84", 6378137.0, 298.257223563);
+    /** GRS 1980 (NAD83, ETRS89, NZGD2000). */
+    public static final Ellipsoid GRS80 = new Ellipsoid("GRS 1980", 6378137.0, 298.257222101);
+    /** The Moon as a sphere of IAU mean radius 1737.4 km. */
+    public static final Ellipsoid MOON = sphere("Moon", 1737400.0);
+    /** Mars as a sphere of IAU mean radius 3389.5 km. */
+    public static final Ellipsoid MARS = sphere("Mars", 3389500.0);
+
+    public Ellipsoid {
+        if (!(semiMajorAxis > 0) || Double.isInfinite(semiMajorAxis)) {
+            throw new IllegalArgumentException("semi-major axis must be positive and finite: " + semiMajorAxis);
+        }
+        if (inverseFlattening == 0) {
+            inverseFlattening = Double.POSITIVE_INFINITY;
+        }
+        if (!(inverseFlattening > 1)) {
+            throw new IllegalArgumentException("inverse flattening must be > 1 (or infinite): " + inverseFlattening);
+        }
+    }
+
+    /** A sphere of the given radius in metres. */
+    public static Ellipsoid sphere(String name, double radius) {
+        return new Ellipsoid(name, radius, Double.POSITIVE_INFINITY);
+    }
+
+    /** The flattening f = (a − b)/a; 0 for a sphere. */
+    public double flattening() {
+        return Double.isInfinite(inverseFlattening) ? 0 : 1 / inverseFlattening;
+    }
+
+    /** The first eccentricity squared e² = f(2 − f). */
+    public double eccentricitySquared() {
+        double f = flattening();
+        return f * (2 - f);
+    }
+
+    /** The polar radius b, in metres. */
+    public double semiMinorAxis() {
+        return semiMajorAxis * (1 - flattening());
+    }
+
+    /** The mean radius (2a + b)/3, in metres (IUGG R1). */
+    public double meanRadius() {
+        return (2 * semiMajorAxis + semiMinorAxis()) / 3;
+    }
+
+    /**
+     * Radius of curvature in the prime vertical, N(φ) = a/√(1 − e² sin²φ), in metres. The length of one radian
+     * of longitude along the parallel at φ is N(φ)·cos φ.
+     */
+    public double primeVerticalRadius(double latitudeRadians) {
+        double s = Math.sin(latitudeRadians);
+        return semiMajorAxis / Math.sqrt(1 - eccentricitySquared() * s * s);
+    }
+
+    /** Radius of curvature in the meridian, M(φ) = a(1 − e²)/(1 − e² sin²φ)^1.5, in metres. */
+    public double meridionalRadius(double latitudeRadians) {
+        double e2 = eccentricitySquared();
+        double s = Math.sin(latitudeRadians);
+        double w = 1 - e2 * s * s;
+        return semiMajorAxis * (1 - e2) / (w * Math.sqrt(w));
+    }
+
+    /**
+     * Length in metres of an arc of longitude {@code deltaLonDegrees} along the parallel at
+     * {@code latitudeDegrees}. Exactly 0 at the poles (cos 90° is clamped so no negative length appears).
+     */
+    public double parallelArcLength(double latitudeDegrees, double deltaLonDegrees) {
+        double phi = Math.toRadians(clampLatitude(latitudeDegrees));
+        double cos = Math.max(0, Math.cos(phi));
+        return primeVerticalRadius(phi) * cos * Math.toRadians(Math.abs(deltaLonDegrees));
+    }
+
+    /**
+     * Length in metres of the meridian arc between two latitudes (degrees), by Simpson's rule on M(φ), which is
+     * exact to well under a millimetre for any DEM cell.
+     */
+    public double meridianArcLength(double latitude1Degrees, double latitude2Degrees) {
+        double p1 = Math.toRadians(clampLatitude(latitude1Degrees));
+        double p2 = Math.toRadians(clampLatitude(latitude2Degrees));
+        double mid = 0.5 * (p1 + p2);
+        double m = (meridionalRadius(p1) + 4 * meridionalRadius(mid) + meridionalRadius(p2)) / 6;
+        return m * Math.abs(p2 - p1);
+    }
+
+    private static double clampLatitude(double latitudeDegrees) {
+        return Math.max(-90, Math.min(90, latitudeDegrees));
+    }
+}

@@ -1,0 +1,107 @@
+package io.github.jdem846.raster;
+
+import java.util.Objects;
+
+/**
+ * A digital elevation model in memory: {@code width × height} float32 elevations in row-major order, row 0 = north,
+ * with its {@link GridGeometry}.
+ *
+ * <p>No-data cells are stored as {@code NaN}, whatever value the file used; {@link #declaredNoData()} keeps that
+ * value for reporting and for writing. Stages therefore test {@code Float.isNaN}. Min, max and the valid count
+ * exclude no-data and are computed once, lazily and thread-safely.
+ *
+ * <p>Instances are immutable as long as nobody writes into {@link #backingArray()}.
+ */
+public final class Dem {
+
+    private final float[] values;
+    private final GridGeometry geometry;
+    private final double declaredNoData;
+    private volatile ElevationStatistics statistics;
+
+    /**
+     * Wraps {@code values} (not copied). Cells equal (as float32) to {@code declaredNoData} are replaced by NaN in
+     * place; pass NaN when the data declares no no-data value (NaN cells are always no-data).
+     *
+     * @throws IllegalArgumentException if the array length is not width × height
+     */
+    public Dem(float[] values, GridGeometry geometry, double declaredNoData) {
+        this.values = Objects.requireNonNull(values, "values");
+        this.geometry = Objects.requireNonNull(geometry, "geometry");
+        long expected = (long) geometry.width() * geometry.height();
+        if (values.length != expected) {
+            throw new IllegalArgumentException("expected " + expected + " values for " + geometry.width() + "×"
+                    + geometry.height() + ", got " + values.length);
+        }
+        this.declaredNoData = declaredNoData;
+        NoData.normalize(values, declaredNoData);
+    }
+
+    /** A DEM with no declared no-data value (NaN cells are still no-data). */
+    public Dem(float[] values, GridGeometry geometry) {
+        this(values, geometry, Double.NaN);
+    }
+
+    public int width() {
+        return geometry.width();
+    }
+
+    public int height() {
+        return geometry.height();
+    }
+
+    public GridGeometry geometry() {
+        return geometry;
+    }
+
+    /** The no-data value the source declared, or NaN when it declared none (or declared NaN). */
+    public double declaredNoData() {
+        return declaredNoData;
+    }
+
+    /** Elevation of cell ({@code col}, {@code row}); NaN for no-data. No bounds check beyond the array's. */
+    public float get(int col, int row) {
+        return values[row * geometry.width() + col];
+    }
+
+    /** True when the cell holds an elevation. */
+    public boolean isValid(int col, int row) {
+        return !Float.isNaN(get(col, row));
+    }
+
+    /**
+     * The backing array, row-major, NaN = no-data. For fast read-only access by stages; callers must not modify
+     * it.
+     */
+    public float[] backingArray() {
+        return values;
+    }
+
+    /** Min, max and count of valid cells (computed once). */
+    public ElevationStatistics statistics() {
+        ElevationStatistics s = statistics;
+        if (s == null) {
+            s = ElevationStatistics.of(values);
+            statistics = s;
+        }
+        return s;
+    }
+
+    /** Cells {@code [col, col+w) × [row, row+h)} as a new DEM with the matching geometry. */
+    public Dem crop(int col, int row, int w, int h) {
+        if (col < 0 || row < 0 || w < 1 || h < 1 || col + w > width() || row + h > height()) {
+            throw new IllegalArgumentException("window " + w + "×" + h + " at (" + col + ", " + row
+                    + ") is not inside " + width() + "×" + height());
+        }
+        float[] out = new float[w * h];
+        for (int r = 0; r < h; r++) {
+            System.arraycopy(values, (row + r) * width() + col, out, r * w, w);
+        }
+        return new Dem(out, geometry.window(col, row, w, h), declaredNoData);
+    }
+
+    @Override
+    public String toString() {
+        return "Dem[" + width() + "×" + height() + ", " + geometry + "]";
+    }
+}

@@ -1,0 +1,22 @@
+package io.github.jdem846.raster;
+
+import java.io.IOException;
+import java.nio.file.Path;
+
+/**
+ * A DEM file that cannot be read: its message names the file, what is wrong and, where possible, what would be
+ * right. The CLI prints the message alone (no stack trace) and exits with status 1.
+ */
+public class DemFormatException extends IOException {
+
+    private static final long serialVersionUID = 1L;
+
+    /** @param file the file at fault; @param problem what is wrong with it (and what would be right) */
+    public DemFormatException(Path file, String problem) {
+        super(file + ": " + problem);
+    }
+
+    public DemFormatException(Path file, String problem, Throwable cause) {
+        super(file + ": " + problem, cause);
+    }
+}

@@ -1,0 +1,205 @@
+package io.github.jdem846.raster;
+
+import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.geo.Ellipsoid;
+import java.util.Objects;
+
+/**
+ * The position of a north-up grid on the ground: an axis-aligned affine transform from (column, row) to world
+ * coordinates, the CRS, and the metric size of a cell.
+ *
+ * <p>Column {@code c} and row {@code r} address the cell whose outer upper-left (north-west) corner is at
+ * {@code (originX + c·cellWidth, originY − r·cellHeight)}; its centre is half a cell further in. Row 0 is north.
+ * Files that anchor coordinates on cell centres (PixelIsPoint, {@code xllcenter}) are converted to this corner form
+ * when read; {@link #declaredAnchor()} remembers what the file said.
+ *
+ * <p>Metric cell size: for a projected CRS it is the cell size times the linear unit in metres, the same for every
+ * row. For a geographic CRS it is computed per row on the CRS's ellipsoid (WGS 84 when unnamed): east–west
+ * N(φ)·cos φ·Δλ, north–south the meridian arc across the row. With unknown units it is the cell size itself
+ * ({@link #hasMetricUnits()} is then false and callers should say so).
+ */
+public final class GridGeometry {
+
+    private final int width;
+    private final int height;
+    private final double originX;
+    private final double originY;
+    private final double cellWidth;
+    private final double cellHeight;
+    private final CrsInfo crs;
+    private final PixelAnchor declaredAnchor;
+
+    /**
+     * @param width          number of columns, ≥ 1
+     * @param height         number of rows, ≥ 1
+     * @param originX        world x of the west edge of column 0
+     * @param originY        world y of the north edge of row 0
+     * @param cellWidth      positive cell width in CRS units
+     * @param cellHeight     positive cell height in CRS units (rows go south)
+     * @param crs            the CRS ({@link CrsInfo#UNKNOWN} when unknown)
+     * @param declaredAnchor what the source file declared
+     */
+    public GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
+                        CrsInfo crs, PixelAnchor declaredAnchor) {
+        if (width < 1 || height < 1) {
+            throw new IllegalArgumentException("grid size must be at least 1×1, got " + width + "×" + height);
+        }
+        if (!(cellWidth > 0) || !(cellHeight > 0) || Double.isInfinite(cellWidth) || Double.isInfinite(cellHeight)) {
+            throw new IllegalArgumentException("cell size must be positive and finite, got " + cellWidth + " × "
+                    + cellHeight);
+        }
+        if (!Double.isFinite(originX) || !Double.isFinite(originY)) {
+            throw new IllegalArgumentException("grid origin must be finite, got " + originX + ", " + originY);
+        }
+        this.width = width;
+        this.height = height;
+        this.originX = originX;
+        this.originY = originY;
+        this.cellWidth = cellWidth;
+        this.cellHeight = cellHeight;
+        this.crs = Objects.requireNonNull(crs, "crs");
+        this.declaredAnchor = Objects.requireNonNull(declaredAnchor, "declaredAnchor");
+    }
+
+    /** A grid with unknown CRS whose cells are {@code cellSizeMeters} metres square (for DEMs made in memory). */
+    public static GridGeometry metric(int width, int height, double cellSizeMeters) {
+        CrsInfo local = CrsInfo.projected("local metric grid", null, 1.0, null);
+        return new GridGeometry(width, height, 0, height * cellSizeMeters, cellSizeMeters, cellSizeMeters, local,
+                PixelAnchor.CORNER);
+    }
+
+    public int width() {
+        return width;
+    }
+
+    public int height() {
+        return height;
+    }
+
+    /** World x of the west edge of the grid. */
+    public double originX() {
+        return originX;
+    }
+
+    /** World y of the north edge of the grid. */
+    public double originY() {
+        return originY;
+    }
+
+    /** Cell width in CRS units. */
+    public double cellWidth() {
+        return cellWidth;
+    }
+
+    /** Cell height in CRS units (positive). */
+    public double cellHeight() {
+        return cellHeight;
+    }
+
+    public CrsInfo crs() {
+        return crs;
+    }
+
+    public PixelAnchor declaredAnchor() {
+        return declaredAnchor;
+    }
+
+    /** World x of the centre of column {@code col} (fractional columns allowed). */
+    public double centerX(double col) {
+        return originX + (col + 0.5) * cellWidth;
+    }
+
+    /** World y of the centre of row {@code row} (fractional rows allowed). */
+    public double centerY(double row) {
+        return originY - (row + 0.5) * cellHeight;
+    }
+
+    /** World x of the east edge. */
+    public double eastX() {
+        return originX + width * cellWidth;
+    }
+
+    /** World y of the south edge. */
+    public double southY() {
+        return originY - height * cellHeight;
+    }
+
+    /** True when cell sizes in metres are known (projected with a known unit, or geographic). */
+    public boolean hasMetricUnits() {
+        return crs.kind() != CrsInfo.Kind.UNKNOWN;
+    }
+
+    /** East–west size in metres of a cell of row {@code row} (see the class comment). */
+    public double cellWidthMeters(int row) {
+        return switch (crs.kind()) {
+            case PROJECTED -> cellWidth * crs.linearUnitMeters();
+            case GEOGRAPHIC -> crs.ellipsoidOrWgs84().parallelArcLength(centerY(row), cellWidth);
+            case UNKNOWN -> cellWidth;
+        };
+    }
+
+    /** North–south size in metres of a cell of row {@code row} (see the class comment). */
+    public double cellHeightMeters(int row) {
+        return switch (crs.kind()) {
+            case PROJECTED -> cellHeight * crs.linearUnitMeters();
+            case GEOGRAPHIC -> {
+                double north = originY - row * cellHeight;
+                yield crs.ellipsoidOrWgs84().meridianArcLength(north, north - cellHeight);
+            }
+            case UNKNOWN -> cellHeight;
+        };
+    }
+
+    /** The ellipsoid used for metric sizes (the CRS's, or WGS 84). */
+    public Ellipsoid ellipsoid() {
+        return crs.ellipsoidOrWgs84();
+    }
+
+    /**
+     * The geometry of the sub-grid of {@code w × h} cells starting at ({@code col}, {@code row}); the window may
+     * extend past the grid (callers clip first when they must not).
+     */
+    public GridGeometry window(int col, int row, int w, int h) {
+        return new GridGeometry(w, h, originX + col * cellWidth, originY - row * cellHeight, cellWidth, cellHeight,
+                crs, declaredAnchor);
+    }
+
+    /**
+     * The geometry of this grid decimated so that each new cell covers {@code factorX × factorY} old cells: the
+     * extent is kept and the last partial block, if any, counts as a whole cell.
+     */
+    public GridGeometry decimate(int factorX, int factorY) {
+        if (factorX < 1 || factorY < 1) {
+            throw new IllegalArgumentException("decimation factors must be ≥ 1, got " + factorX + ", " + factorY);
+        }
+        int w = Math.max(1, (width + factorX - 1) / factorX);
+        int h = Math.max(1, (height + factorY - 1) / factorY);
+        return new GridGeometry(w, h, originX, originY, cellWidth * factorX, cellHeight * factorY, crs,
+                declaredAnchor);
+    }
+
+    /** A copy with another CRS. */
+    public GridGeometry withCrs(CrsInfo newCrs) {
+        return new GridGeometry(width, height, originX, originY, cellWidth, cellHeight, newCrs, declaredAnchor);
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof GridGeometry g && width == g.width && height == g.height
+                && Double.compare(originX, g.originX) == 0 && Double.compare(originY, g.originY) == 0
+                && Double.compare(cellWidth, g.cellWidth) == 0 && Double.compare(cellHeight, g.cellHeight) == 0
+                && crs.kind() == g.crs.kind() && Objects.equals(crs.epsg(), g.crs.epsg());
+    }
+
+    @Override
+    public int hashCode() {
+        return Objects.hash(width, height, originX, originY, cellWidth, cellHeight, crs.kind(), crs.epsg());
+    }
+
+    @Override
+    public String toString() {
+        return "GridGeometry[" + width + "×" + height + ", origin (" + originX + ", " + originY + "), cell "
+                + cellWidth + " × " + cellHeight + ", " + crs.kind() + (crs.name() != null ? " " + crs.name() : "")
+                + "]";
+    }
+}
