@@ -24,7 +24,8 @@ import javax.imageio.stream.ImageInputStream;
  * GeoTIFF: pixels decoded by TwelveMonkeys imageio-tiff (its reader SPI is instantiated directly, not looked up in
  * the global ImageIO registry), georeferencing from ModelPixelScale + ModelTiepoint or ModelTransformation, CRS from
  * the GeoKeys ({@link GeoTiffCrs}), no-data from GDAL_NODATA. Rotated or sheared grids are refused. Rows are read
- * through {@link ImageReadParam#setSourceRegion}, so only the strips or tiles of a window are decoded.
+ * through {@link ImageReadParam#setSourceRegion}, so only the strips (or, for tiled files, the rows of tiles) of a
+ * window are decoded.
  */
 final class GeoTiffSource implements RasterSource {
 
@@ -33,13 +34,16 @@ final class GeoTiffSource implements RasterSource {
     private final ImageReader reader;
     private final DemInfo info;
     private final int rowBlock;
+    private final boolean tiled;
 
-    private GeoTiffSource(Path file, ImageInputStream stream, ImageReader reader, DemInfo info, int rowBlock) {
+    private GeoTiffSource(Path file, ImageInputStream stream, ImageReader reader, DemInfo info, int rowBlock,
+                          boolean tiled) {
         this.file = file;
         this.stream = stream;
         this.reader = reader;
         this.info = info;
         this.rowBlock = rowBlock;
+        this.tiled = tiled;
     }
 
     static RasterSource open(Path tif) throws IOException {
@@ -61,10 +65,11 @@ final class GeoTiffSource implements RasterSource {
             checkNotTruncated(tif, fields);
             GridGeometry geometry = geometry(tif, fields, width, height, notices);
             Double noData = noData(fields, notices);
-            int rowBlock = fields.has(TiffFields.TILE_LENGTH) ? fields.intValue(TiffFields.TILE_LENGTH, 1)
+            boolean tiled = fields.has(TiffFields.TILE_OFFSETS);
+            int rowBlock = tiled ? fields.intValue(TiffFields.TILE_LENGTH, 1)
                     : Math.max(1, Math.min(height, fields.intValue(TiffFields.ROWS_PER_STRIP, height)));
             DemInfo info = new DemInfo(tif.toString(), DemFormat.GEOTIFF, type, bands, geometry, noData, notices);
-            return new GeoTiffSource(tif, stream, reader, info, rowBlock);
+            return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled);
         } catch (DemFormatException e) {
             closeQuietly(reader, stream);
             throw e;
@@ -87,7 +92,11 @@ final class GeoTiffSource implements RasterSource {
     @Override
     public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
         ImageReadParam param = reader.getDefaultReadParam();
-        param.setSourceRegion(new Rectangle(col, row, width, rows));
+        // TwelveMonkeys 3.15.0 fails on tiled images when the source region is narrower than the image
+        // (haraldk/TwelveMonkeys#746), so tiled files are read in full-width row bands and cropped here.
+        int readCol = tiled ? 0 : col;
+        int readWidth = tiled ? info.width() : width;
+        param.setSourceRegion(new Rectangle(readCol, row, readWidth, rows));
         Raster raster;
         try {
             raster = reader.readRaster(0, param);
@@ -95,16 +104,19 @@ final class GeoTiffSource implements RasterSource {
             throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
                     + " (truncated or corrupt TIFF?): " + describe(e), e);
         }
-        if (raster.getWidth() < width || raster.getHeight() < rows) {
+        if (raster.getWidth() < readWidth || raster.getHeight() < rows) {
             throw new DemFormatException(file, "the TIFF decoder returned " + raster.getWidth() + "×"
-                    + raster.getHeight() + " cells for a " + width + "×" + rows + " region");
+                    + raster.getHeight() + " cells for a " + readWidth + "×" + rows + " region");
         }
-        copyBand0(raster, width, rows, dst);
+        copyBand0(raster, col - readCol, width, rows, dst);
     }
 
-    /** Band 0 of the raster as float32, undoing Java's lack of signed bytes and unsigned ints. */
-    private void copyBand0(Raster raster, int width, int rows, float[] dst) {
-        int x0 = raster.getMinX();
+    /**
+     * Columns {@code [skip, skip+width)} of band 0 of the raster as float32, undoing Java's lack of signed bytes
+     * and unsigned ints.
+     */
+    private void copyBand0(Raster raster, int skip, int width, int rows, float[] dst) {
+        int x0 = raster.getMinX() + skip;
         int y0 = raster.getMinY();
         SampleType type = info.dataType();
         int dataType = raster.getDataBuffer().getDataType();
