@@ -12,6 +12,13 @@ import java.util.Objects;
  * centre; a single tile covering the grid gives the original's default of one sun at the model centre
  * ({@code recalculateLightSourceOnEachPoint = false}).
  *
+ * <p>Two views of each tile's sun: {@link #forTile} is the sun as seen on the sky (azimuth from true north), and
+ * {@link #lightForTile}/{@link #lightForCell} is the light in the grid's own frame, azimuth measured clockwise from
+ * the grid's "up" (the direction of decreasing row), which is what a hillshade computed on the grid needs. The two
+ * differ by the grid convergence γ, the true bearing of grid-up ({@link #gridConvergenceDegrees}): 0 for a
+ * geographic grid, up to a few degrees near the edge of a UTM zone. It is measured from the locator by a central
+ * difference over one cell.
+ *
  * <p>Longitudes from the locator are wrapped into [−180, 180), so grids across the antimeridian work. Immutable and
  * thread-safe once built.
  */
@@ -24,9 +31,11 @@ public final class SunPerTile {
     private final int tilesAcross;
     private final int tilesDown;
     private final SunPosition[] suns;
+    private final double[] convergence;
     private final LightDirection[] lights;
 
-    private SunPerTile(int width, int height, int tileWidth, int tileHeight, SunPosition[] suns) {
+    private SunPerTile(int width, int height, int tileWidth, int tileHeight, SunPosition[] suns,
+                       double[] convergence) {
         this.width = width;
         this.height = height;
         this.tileWidth = tileWidth;
@@ -34,7 +43,11 @@ public final class SunPerTile {
         this.tilesAcross = ceilDiv(width, tileWidth);
         this.tilesDown = ceilDiv(height, tileHeight);
         this.suns = suns;
-        this.lights = Arrays.stream(suns).map(SunPosition::toLightDirection).toArray(LightDirection[]::new);
+        this.convergence = convergence;
+        this.lights = new LightDirection[suns.length];
+        for (int i = 0; i < suns.length; i++) {
+            lights[i] = new LightDirection(suns[i].azimuthDegrees() - convergence[i], suns[i].elevationDegrees());
+        }
     }
 
     /**
@@ -55,6 +68,7 @@ public final class SunPerTile {
         int across = ceilDiv(grid.width(), tileWidth);
         int down = ceilDiv(grid.height(), tileHeight);
         SunPosition[] suns = new SunPosition[across * down];
+        double[] convergence = new double[across * down];
         for (int ty = 0; ty < down; ty++) {
             int row0 = ty * tileHeight;
             int row1 = Math.min(grid.height(), row0 + tileHeight);
@@ -64,10 +78,13 @@ public final class SunPerTile {
                 // centre of cells [col0, col1) in cell-centre coordinates
                 double col = 0.5 * (col0 + col1 - 1);
                 double row = 0.5 * (row0 + row1 - 1);
-                suns[ty * across + tx] = sunAt(sun, locator, col, row, tx, ty);
+                double[] ll = latLon(locator, col, row, tx, ty);
+                suns[ty * across + tx] = sun.position(ll[0], LatLon.wrapLongitude(ll[1]));
+                convergence[ty * across + tx] = convergence(locator, col, row, ll[0], tx, ty,
+                        grid.ellipsoid().eccentricitySquared());
             }
         }
-        return new SunPerTile(grid.width(), grid.height(), tileWidth, tileHeight, suns);
+        return new SunPerTile(grid.width(), grid.height(), tileWidth, tileHeight, suns, convergence);
     }
 
     /** One sun per row of cells (tiles as wide as the grid and one row high). */
@@ -82,15 +99,33 @@ public final class SunPerTile {
         return compute(grid, locator, grid.width(), grid.height(), time, observer);
     }
 
-    private static SunPosition sunAt(SunAtInstant sun, LatLonLocator locator, double col, double row, int tx,
-                                     int ty) {
+    private static double[] latLon(LatLonLocator locator, double col, double row, int tx, int ty) {
         double[] ll = locator.latLon(col, row);
         if (ll == null || ll.length != 2 || !Double.isFinite(ll[0]) || !Double.isFinite(ll[1])
                 || Math.abs(ll[0]) > 90) {
             throw new IllegalArgumentException("the locator gave no valid latitude/longitude for tile (" + tx + ", "
                     + ty + ") at cell (" + col + ", " + row + "): " + (ll == null ? "null" : Arrays.toString(ll)));
         }
-        return sun.position(ll[0], LatLon.wrapLongitude(ll[1]));
+        return ll;
+    }
+
+    /**
+     * The true bearing of grid-up at ({@code col}, {@code row}), in degrees (clockwise from north), from the
+     * locator half a cell above and below: atan2(Δλ·cos φ·N/M, Δφ), N and M the ellipsoid's radii of curvature.
+     */
+    private static double convergence(LatLonLocator locator, double col, double row, double lat, int tx, int ty,
+                                      double e2) {
+        double[] up = latLon(locator, col, row - 0.5, tx, ty);
+        double[] down = latLon(locator, col, row + 0.5, tx, ty);
+        double dLat = up[0] - down[0];
+        double dLon = LatLon.wrapLongitude(up[1] - down[1]);
+        if (dLat == 0 && dLon == 0) {
+            return 0;
+        }
+        double phi = Math.toRadians(lat);
+        double s = Math.sin(phi);
+        double nOverM = (1 - e2 * s * s) / (1 - e2);
+        return Math.toDegrees(Math.atan2(dLon * Math.cos(phi) * nOverM, dLat));
     }
 
     private static int ceilDiv(int a, int b) {
@@ -113,25 +148,45 @@ public final class SunPerTile {
         return tilesDown;
     }
 
-    /** The sun of tile ({@code tileCol}, {@code tileRow}). */
+    /** The sun on the sky (azimuth from true north) of tile ({@code tileCol}, {@code tileRow}). */
     public SunPosition forTile(int tileCol, int tileRow) {
+        return suns[tileIndex(tileCol, tileRow)];
+    }
+
+    /** The sun on the sky (azimuth from true north) of the tile that holds cell ({@code col}, {@code row}). */
+    public SunPosition forCell(int col, int row) {
+        return suns[cellIndex(col, row)];
+    }
+
+    /** The light of tile ({@code tileCol}, {@code tileRow}) in the grid's frame (azimuth from grid-up). */
+    public LightDirection lightForTile(int tileCol, int tileRow) {
+        return lights[tileIndex(tileCol, tileRow)];
+    }
+
+    /**
+     * The light of the tile that holds cell ({@code col}, {@code row}) in the grid's frame (azimuth from grid-up),
+     * for the hillshade and shadow stages; no allocation.
+     */
+    public LightDirection lightForCell(int col, int row) {
+        return lights[cellIndex(col, row)];
+    }
+
+    /** The grid convergence γ of tile ({@code tileCol}, {@code tileRow}): true bearing of grid-up, degrees. */
+    public double gridConvergenceDegrees(int tileCol, int tileRow) {
+        return convergence[tileIndex(tileCol, tileRow)];
+    }
+
+    private int tileIndex(int tileCol, int tileRow) {
         if (tileCol < 0 || tileCol >= tilesAcross || tileRow < 0 || tileRow >= tilesDown) {
             throw new IndexOutOfBoundsException("tile (" + tileCol + ", " + tileRow + ") is outside " + tilesAcross
                     + "×" + tilesDown + " tiles");
         }
-        return suns[tileRow * tilesAcross + tileCol];
+        return tileRow * tilesAcross + tileCol;
     }
 
-    /** The sun of the tile that holds cell ({@code col}, {@code row}). */
-    public SunPosition forCell(int col, int row) {
+    private int cellIndex(int col, int row) {
         checkCell(col, row);
-        return suns[(row / tileHeight) * tilesAcross + col / tileWidth];
-    }
-
-    /** The light direction of the tile that holds cell ({@code col}, {@code row}) (no allocation). */
-    public LightDirection lightForCell(int col, int row) {
-        checkCell(col, row);
-        return lights[(row / tileHeight) * tilesAcross + col / tileWidth];
+        return (row / tileHeight) * tilesAcross + col / tileWidth;
     }
 
     private void checkCell(int col, int row) {

@@ -90,6 +90,62 @@ class SunPerTileTest {
     }
 
     @Test
+    void gridConvergenceOfARotatedGridIsRemovedFromTheLight() {
+        // a grid of 30 m cells whose "up" points 3° east of true north, mapped equirectangularly about its centre
+        // (50 N, 6 E) on a sphere: at the centre the true bearing of grid-up is exactly 3°
+        double theta = Math.toRadians(3);
+        double r = 6_371_000;
+        LatLonLocator rotated = (c, w) -> {
+            double col = c - 99.5;
+            double row = w - 99.5;
+            double east = 30 * (col * Math.cos(theta) - row * Math.sin(theta));
+            double north = 30 * (-col * Math.sin(theta) - row * Math.cos(theta));
+            return new double[] {50 + Math.toDegrees(north / r),
+                6 + Math.toDegrees(east / (r * Math.cos(Math.toRadians(50))))};
+        };
+        GridGeometry g = new GridGeometry(200, 200, 0, 6000, 30, 30,
+                CrsInfo.projected("local on a sphere", null, 1, Ellipsoid.sphere("sphere", r)), PixelAnchor.CORNER);
+        SunPerTile tiles = SunPerTile.single(g, rotated, NOON_UTC, Observer.SEA_LEVEL);
+        assertEquals(3, tiles.gridConvergenceDegrees(0, 0), 1e-6);
+        assertEquals(tiles.forTile(0, 0).azimuthDegrees() - 3, tiles.lightForTile(0, 0).azimuthDegrees(), 1e-6);
+        assertEquals(tiles.forTile(0, 0).elevationDegrees(), tiles.lightForCell(199, 0).elevationDegrees(), 0);
+    }
+
+    @Test
+    void geographicGridsHaveNoConvergence() {
+        GridGeometry g = degrees(10, 10, 0, 60, 1);
+        SunPerTile tiles = SunPerTile.compute(g, LatLonLocator.geographic(g), 5, 5, NOON_UTC, Observer.SEA_LEVEL);
+        assertEquals(0, tiles.gridConvergenceDegrees(1, 1), 0);
+        assertEquals(tiles.forTile(1, 1).toLightDirection(), tiles.lightForTile(1, 1));
+    }
+
+    @Test
+    void utmConvergenceMatchesTheTransverseMercatorFormula() throws Exception {
+        // Apache SIS's UTM 32N inverse as the locator; γ = atan(tan(λ − λ0)·sin φ) to first order (λ0 = 9° E)
+        var utm = org.apache.sis.referencing.CommonCRS.WGS84.universal(50, 6);
+        var toGeo = org.apache.sis.referencing.CRS.findOperation(utm,
+                org.apache.sis.referencing.CommonCRS.WGS84.geographic(), null).getMathTransform();
+        double x0 = 290_000; // about 6.1° E at 50° N
+        double y0 = 5_560_000;
+        LatLonLocator locator = (col, row) -> {
+            double[] p = {x0 + (col + 0.5) * 30, y0 - (row + 0.5) * 30};
+            try {
+                toGeo.transform(p, 0, p, 0, 1);
+            } catch (org.opengis.referencing.operation.TransformException e) {
+                throw new IllegalStateException(e);
+            }
+            return p; // SIS geographic(): latitude, longitude
+        };
+        GridGeometry g = GridGeometry.metric(100, 100, 30);
+        SunPerTile tiles = SunPerTile.single(g, locator, NOON_UTC, Observer.SEA_LEVEL);
+        double[] centre = locator.latLon(49.5, 49.5);
+        double expected = Math.toDegrees(Math.atan(Math.tan(Math.toRadians(centre[1] - 9))
+                * Math.sin(Math.toRadians(centre[0]))));
+        assertEquals(expected, tiles.gridConvergenceDegrees(0, 0), 0.02);
+        assertTrue(expected < -2, "west of the central meridian grid north points west of true north: " + expected);
+    }
+
+    @Test
     void customLocatorAndRefusals() {
         GridGeometry metric = GridGeometry.metric(100, 100, 30);
         assertMessage(() -> LatLonLocator.geographic(metric), "latitude and longitude");
