@@ -8,7 +8,8 @@ import java.util.Objects;
  * gdaldem's multidirectional hillshade ({@code gdaldem hillshade -multidirectional -compute_edges}, GDAL 3.6
  * {@code GDALHillshadeMultiDirectionalAlg}, after USGS Open-File Report 92-422): Horn's gradient lit from the
  * azimuths 225°, 270°, 315° and 360° at the given altitude (the light's azimuth is ignored), each cosine clamped at 0
- * and weighted by sin²(aspect − azimuth):
+ * and weighted by cos²(A − azimuth), A the compass direction the slope faces (gdaldem's comment writes it as
+ * sin²(aspect − azimuth) with its own aspect angle); a slope is lit mostly by the light it faces:
  * <pre>
  *   x = ((w0 + 2w3 + w6) − (w2 + 2w5 + w8)) / Δx,   y = ((w0 + 2w1 + w2) − (w6 + 2w7 + w8)) / Δy,   s = x² + y²
  *   W225 = s/2 − xy,  W270 = x²,  W315 = s/2 + xy,  W360 = y²          (they sum to 2s)
