@@ -1,61 +1,56 @@
 package io.github.jdem846.render;
 
+import io.github.jdem846.shade.Brightness;
+import io.github.jdem846.shade.HillshadeOptions;
+
 /**
- * Combines a tint colour, the illumination (eq. 7's dot product) and the cast-shadow fraction into one ARGB pixel:
- * the original's era-B order — dot, minus 2 × shadow intensity × shadowed fraction, clamped at −1, scaled by the
- * relative light or dark intensity, spot exponent (sign-preserving) — then eq. 8 on each channel.
+ * Combines a tint colour, the illumination (eq. 7's dot product) and the cast-shadow fraction into one ARGB pixel,
+ * in the original's era-B order: the dot product, minus 2 × shadow intensity × shadowed fraction (and any twilight
+ * fade), clamped to [−1, 1], then the jDem846 tone (relative light/dark intensity, sign-preserving spot exponent,
+ * {@link HillshadeOptions#tone}), then eq. 8 on each channel ({@link Brightness#adjustBrightness(int, double)}).
  */
 public final class Compositor {
 
-    private final Composition composition;
+    /** The original's {@code shadowIntensity} default. */
+    public static final double DEFAULT_SHADOW_INTENSITY = 0.4;
 
-    public Compositor(Composition composition) {
-        this.composition = composition;
+    private final HillshadeOptions tone;
+    private final double shadowIntensity;
+
+    /**
+     * @param tone            supplies the light/dark intensities and spot exponent
+     * @param shadowIntensity a cell fully in cast shadow loses 2 × this much brightness; 0 to 1
+     */
+    public Compositor(HillshadeOptions tone, double shadowIntensity) {
+        if (!(shadowIntensity >= 0 && shadowIntensity <= 1)) {
+            throw new IllegalArgumentException("shadow intensity must be between 0 and 1 (default 0.4), got "
+                    + shadowIntensity);
+        }
+        this.tone = tone;
+        this.shadowIntensity = shadowIntensity;
     }
 
     /**
-     * The brightness d in [−1, 1] handed to eq. 8.
+     * The toned brightness handed to eq. 8.
      *
      * @param dot            cosine of incidence in [−1, 1] (0 when illumination is disabled)
      * @param shadowFraction 0 = lit … 1 = fully in cast shadow
-     * @param fade           extra darkening in [0, 2], e.g. twilight (0 in daylight)
+     * @param fade           extra darkening in [0, 2], e.g. the twilight fade (0 in daylight)
      */
     public double brightness(double dot, double shadowFraction, double fade) {
-        double d = dot - fade - 2 * composition.shadowIntensity() * shadowFraction;
-        d = Math.max(-1, Math.min(1, d));
-        d *= d > 0 ? composition.relativeLightIntensity() : composition.relativeDarkIntensity();
-        if (composition.spotExponent() != 1 && d != 0) {
-            d = Math.copySign(Math.pow(Math.abs(d), composition.spotExponent()), d);
-        }
-        return d;
+        double d = dot - fade - 2 * shadowIntensity * shadowFraction;
+        return tone.tone(Math.max(-1, Math.min(1, d)));
     }
 
     /**
-     * Eq. 8 on one channel in [0, 1]: {@code c·(1 + d)} when d &lt; 0, {@code c + (1 − c)·d} otherwise.
-     */
-    public static double adjustBrightness(double channel, double d) {
-        return d < 0 ? channel * (1 + d) : channel + (1 - channel) * d;
-    }
-
-    /**
-     * The pixel for one cell. A transparent tint (no-data) or a NaN dot stays fully transparent.
+     * The pixel for one cell. A transparent tint (no-data) or a NaN dot stays fully transparent (0).
      *
      * @param tintArgb non-premultiplied ARGB of the cell's tint
      */
     public int compose(int tintArgb, double dot, double shadowFraction, double fade) {
-        int alpha = tintArgb >>> 24;
-        if (alpha == 0 || Double.isNaN(dot)) {
+        if ((tintArgb >>> 24) == 0 || Double.isNaN(dot)) {
             return 0;
         }
-        double d = brightness(dot, shadowFraction, fade);
-        int r = channel((tintArgb >> 16) & 0xff, d);
-        int g = channel((tintArgb >> 8) & 0xff, d);
-        int b = channel(tintArgb & 0xff, d);
-        return (alpha << 24) | (r << 16) | (g << 8) | b;
-    }
-
-    private static int channel(int value, double d) {
-        long v = Math.round(adjustBrightness(value / 255.0, d) * 255.0);
-        return (int) Math.max(0, Math.min(255, v));
+        return Brightness.adjustBrightness(tintArgb, brightness(dot, shadowFraction, fade));
     }
 }

@@ -2,20 +2,22 @@ package io.github.jdem846.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import io.github.jdem846.shade.Brightness;
+import io.github.jdem846.shade.HillshadeOptions;
 import org.junit.jupiter.api.Test;
 
 class CompositorTest {
 
-    private final Compositor original = new Compositor(Composition.ORIGINAL);
+    private final Compositor original = new Compositor(HillshadeOptions.DEFAULTS, 0.4);
 
     @Test
     void eq8DarkensTowardBlackAndLightensTowardWhite() {
         // Worked by hand: c = 0.6; d = −0.5 → 0.6·0.5 = 0.3; d = +0.5 → 0.6 + 0.4·0.5 = 0.8.
-        assertEquals(0.3, Compositor.adjustBrightness(0.6, -0.5), 1e-15);
-        assertEquals(0.8, Compositor.adjustBrightness(0.6, 0.5), 1e-15);
-        assertEquals(0.0, Compositor.adjustBrightness(0.6, -1), 1e-15);
-        assertEquals(1.0, Compositor.adjustBrightness(0.6, 1), 1e-15);
-        assertEquals(0.6, Compositor.adjustBrightness(0.6, 0), 1e-15);
+        assertEquals(0.3, Brightness.adjustBrightness(0.6, -0.5), 1e-15);
+        assertEquals(0.8, Brightness.adjustBrightness(0.6, 0.5), 1e-15);
+        assertEquals(0.0, Brightness.adjustBrightness(0.6, -1), 1e-15);
+        assertEquals(1.0, Brightness.adjustBrightness(0.6, 1), 1e-15);
+        assertEquals(0.6, Brightness.adjustBrightness(0.6, 0), 1e-15);
     }
 
     @Test
@@ -30,7 +32,7 @@ class CompositorTest {
 
     @Test
     void evenSpotExponentKeepsShadeDark() {
-        Compositor spot2 = new Compositor(new Composition(1, 1, 2, 0.4));
+        Compositor spot2 = new Compositor(HillshadeOptions.DEFAULTS.withIntensities(1, 1).withSpotExponent(2), 0.4);
         assertEquals(-0.64, spot2.brightness(-0.8, 0, 0), 1e-12);
         assertEquals(0.64, spot2.brightness(0.8, 0, 0), 1e-12);
     }
