@@ -11,10 +11,10 @@ export GDAL_PAM_ENABLED=NO          # never write .aux.xml statistics next to th
 # exact_every5m.txt: a stop every 5 m from 145 to 545 m; the first line is a sentinel no cell has
 # (GDAL 3.6.2's VRT lookup table drops the first entry in exact mode).
 {
-  echo "# -exact_color_entry classes for Luxembourg: a stop every 5 m, colour r=(3v mod 256), g=(7v mod 256), b=v-140"
+  echo "# -exact_color_entry classes for Luxembourg: a stop every 5 m, colour r=(3v mod 256), g=(7v mod 256), b=(v-140)/2"
   echo "# first line: a sentinel elevation no cell has (see README.md)"
   echo "-99999 0 0 0 255"
-  awk 'BEGIN { for (v = 145; v <= 545; v += 5) printf "%d %d %d %d\n", v, (3*v)%256, (7*v)%256, v-140 }'
+  awk 'BEGIN { for (v = 145; v <= 545; v += 5) printf "%d %d %d %d\n", v, (3*v)%256, (7*v)%256, int((v-140)/2) }'
 } > $G/colors/exact_every5m.txt
 
 # standard_vancouver.txt: the 'standard' ramp (hypsometric-global above 0 m over [0, max], bathymetric at and
