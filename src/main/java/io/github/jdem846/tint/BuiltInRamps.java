@@ -1,6 +1,7 @@
 package io.github.jdem846.tint;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -81,7 +82,7 @@ final class BuiltInRamps {
         add(m, percent("gray", 0, rgb(128, 128, 128)));
         // The original's bumpmap: black at the minimum to white at the maximum.
         add(m, percent("bumpmap", 0, rgb(0, 0, 0), 100, rgb(255, 255, 255)));
-        return java.util.Collections.unmodifiableMap(m);
+        return Collections.unmodifiableMap(m);
     }
 
     /**

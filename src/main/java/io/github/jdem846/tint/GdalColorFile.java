@@ -6,6 +6,8 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -13,7 +15,7 @@ import java.util.regex.Pattern;
 
 /**
  * Reader of the colour files of {@code gdaldem color-relief}, following GDAL's parser (apps/gdaldem_lib.cpp,
- * {@code GDALColorReliefParseColorFile}; {@code GDALLoadTextColorMap} since 3.10) line by line:
+ * {@code GDALColorReliefParseColorFile}; {@code GDALLoadTextColorMap} in recent GDAL) line by line:
  * <ul>
  *   <li>fields are split at any run of spaces, tabs, commas and colons;</li>
  *   <li>a line whose first field starts with {@code #} or {@code /} is a comment, a blank line is skipped;</li>
@@ -192,11 +194,11 @@ final class GdalColorFile {
         double[][] fractions = {{1, 1, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1},
             {0, 1, 1}, {0, .75, .75}, {.75, .75, .75}, {.75, .75, .75}, {1, .5, 0}, {.75, .5, .25}, {.5, 0, 1},
             {.5, 0, 1}, {0, .5, 1}};
-        Map<String, Integer> m = new java.util.LinkedHashMap<>();
+        Map<String, Integer> m = new LinkedHashMap<>();
         for (int i = 0; i < names.length; i++) {
             double[] c = fractions[i];
             m.put(names[i], (int) (255.0 * c[0]) << 16 | (int) (255.0 * c[1]) << 8 | (int) (255.0 * c[2]));
         }
-        return java.util.Collections.unmodifiableMap(m);
+        return Collections.unmodifiableMap(m);
     }
 }

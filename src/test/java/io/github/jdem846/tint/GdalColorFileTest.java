@@ -166,6 +166,16 @@ class GdalColorFileTest {
     }
 
     @Test
+    void theExampleInTheDocsIsValid() throws IOException {
+        String doc = Files.readString(Path.of("docs", "tint.md"));
+        int start = doc.indexOf("```\n# A comment line") + 4;
+        StopRamp ramp = read(doc.substring(start, doc.indexOf("```", start)));
+        assertEquals(4, ramp.stops().size());
+        assertEquals(0, ramp.noDataArgb());
+        assertEquals(argb(255, 0, 0, 128), ramp.stops().get(3).argb());
+    }
+
+    @Test
     void missingFileIsAnIoError() {
         assertThrows(java.nio.file.NoSuchFileException.class,
                 () -> ColorRamp.fromGdalColorFile(dir.resolve("absent.txt"), ColorSelection.INTERPOLATE));
