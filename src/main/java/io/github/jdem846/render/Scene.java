@@ -6,7 +6,6 @@ import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shade.HillshadeOptions;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowOptions;
-import io.github.jdem846.tint.BuiltInRamps;
 import io.github.jdem846.tint.ColorRamp;
 import java.util.Objects;
 
@@ -46,7 +45,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * and intensities 0.75/1.0, no cast shadows, sun at azimuth 320° and elevation 25°, shadow intensity 0.4.
      */
     public static Scene defaults() {
-        return new Scene(BuiltInRamps.named("hypsometric"), HillshadeMethod.JDEM846, HillshadeOptions.DEFAULTS,
+        return new Scene(ColorRamp.defaultRamp(), HillshadeMethod.JDEM846, HillshadeOptions.DEFAULTS,
                 ShadowAlgorithm.NONE, ShadowOptions.DEFAULTS, LightField.uniform(LightDirection.ORIGINAL_DEFAULT),
                 Compositor.DEFAULT_SHADOW_INTENSITY, 0);
     }
