@@ -47,8 +47,7 @@ public final class ImageOutput {
     public static WriteResult writeRgba(Path file, int[] argb, int width, int height, GeoReference geo,
                                         WriteOptions options) throws IOException {
         Objects.requireNonNull(argb, "argb");
-        BufferedImage image = Rasters.argbImage(argb, width, height);
-        return write(file, image, geo, options, null);
+        return write(file, new Pixels.Argb(argb, width, height), geo, options, null);
     }
 
     /**
@@ -65,8 +64,7 @@ public final class ImageOutput {
         if (noData != null && !(noData >= 0 && noData <= 255 && noData == Math.rint(noData))) {
             throw new IllegalArgumentException("no-data of an 8-bit image must be an integer 0..255, got " + noData);
         }
-        BufferedImage image = Rasters.grayImage(gray, width, height);
-        return write(file, image, geo, options, noData);
+        return write(file, new Pixels.Gray(gray, width, height), geo, options, noData);
     }
 
     /**
@@ -84,8 +82,7 @@ public final class ImageOutput {
             throw new IllegalArgumentException("float32 images can only be written as GeoTIFF (.tif, .tiff), not '"
                     + file + "'");
         }
-        BufferedImage image = Rasters.floatImage(values, width, height);
-        return write(file, image, geo, options, options.noData());
+        return write(file, new Pixels.Float32(values, width, height), geo, options, options.noData());
     }
 
     /**
@@ -125,7 +122,7 @@ public final class ImageOutput {
         return image.resolveSibling(image.getFileName() + ".aux.xml");
     }
 
-    private static WriteResult write(Path file, BufferedImage image, GeoReference geo, WriteOptions options,
+    private static WriteResult write(Path file, Pixels image, GeoReference geo, WriteOptions options,
                                      Double noData) throws IOException {
         Objects.requireNonNull(file, "file");
         Objects.requireNonNull(options, "options");
@@ -141,7 +138,7 @@ public final class ImageOutput {
         String prjText = null;
         String auxText = null;
         if (sidecarsDue && geo != null) {
-            worldText = WorldFile.of(geo, image.getWidth(), image.getHeight()).toText();
+            worldText = WorldFile.of(geo, image.width(), image.height()).toText();
             EsriPrj.Result prj = EsriPrj.of(geo.crs());
             if (prj.wkt().isPresent()) {
                 prjText = prj.wkt().get() + "\n";
@@ -190,10 +187,10 @@ public final class ImageOutput {
         return new WriteResult(file, sidecars, notices);
     }
 
-    private static void encode(ImageFormat format, BufferedImage image, Path temp, GeoReference geo, Double noData,
+    private static void encode(ImageFormat format, Pixels image, Path temp, GeoReference geo, Double noData,
                                WriteOptions options) throws IOException {
         switch (format) {
-            case PNG -> PngWriter.write(image, temp, options.pngCompressionLevel(), options.parallelPng());
+            case PNG -> PngWriter.write(image.image(), temp, options.pngCompressionLevel(), options.parallelPng());
             case GEOTIFF -> GeoTiffWriter.write(image, temp, geo, noData);
         }
     }
