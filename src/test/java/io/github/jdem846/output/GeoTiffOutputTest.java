@@ -163,6 +163,63 @@ class GeoTiffOutputTest {
         assertEquals("Local grid|", tags.text(GeoKeyDirectory.TAG_GEO_ASCII_PARAMS));
     }
 
+    /** Noise does not compress: Deflate output is larger than the strip (the JDK TIFF writer truncates it). */
+    @Test
+    void incompressibleMultiStripDataRoundTrips() throws IOException {
+        int w = 300;
+        int h = 200; // 240 000 bytes of RGBA or float: four strips of about 64 KiB
+        Random random = new Random(4);
+        int[] argb = new int[w * h];
+        float[] values = new float[w * h];
+        for (int i = 0; i < argb.length; i++) {
+            argb[i] = random.nextInt();
+            values[i] = Float.intBitsToFloat(random.nextInt());
+        }
+        Path rgba = dir.resolve("noise.tif");
+        ImageOutput.writeRgba(rgba, argb, w, h, null, WriteOptions.defaults());
+        assertArrayEquals(argb, TiffTags.image(rgba).getRGB(0, 0, w, h, null, 0, w));
+        assertTrue(TiffTags.read(rgba).numbers(279).length > 1, "several strips");
+
+        Path flt = dir.resolve("noise32.tif");
+        ImageOutput.writeFloat(flt, values, w, h, null, WriteOptions.defaults());
+        float[] read = TiffTags.raster(flt).getSamples(0, 0, w, h, 0, (float[]) null);
+        for (int i = 0; i < values.length; i++) {
+            assertEquals(Float.floatToRawIntBits(values[i]), Float.floatToRawIntBits(read[i]), "pixel " + i);
+        }
+    }
+
+    /** TIFF 6.0 section 2: IFD and out-of-line values on word boundaries, entries sorted by tag. */
+    @Test
+    void fileStructureFollowsTheBaselineRules() throws IOException {
+        GeoReference geo = new GeoReference(0, 1, 1, 0, CrsInfo.projected("odd name", null, 2.5, null));
+        Path file = dir.resolve("layout.tif");
+        ImageOutput.writeGray(file, new byte[3 * 5], 3, 5, geo, WriteOptions.defaults().withNoData(7));
+        java.nio.ByteBuffer b = java.nio.ByteBuffer.wrap(java.nio.file.Files.readAllBytes(file))
+                .order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        assertEquals('I', b.get(0));
+        assertEquals('I', b.get(1));
+        assertEquals(42, b.getShort(2));
+        int ifd = b.getInt(4);
+        assertEquals(0, ifd % 2);
+        int n = b.getShort(ifd);
+        int[] typeSizes = {0, 1, 1, 2, 4, 8, 1, 1, 2, 4, 8, 4, 8};
+        int previous = -1;
+        for (int i = 0; i < n; i++) {
+            int at = ifd + 2 + 12 * i;
+            int tag = b.getShort(at) & 0xFFFF;
+            assertTrue(tag > previous, "tags ascending");
+            previous = tag;
+            long bytes = (long) typeSizes[b.getShort(at + 2)] * b.getInt(at + 4);
+            if (bytes > 4) {
+                int offset = b.getInt(at + 8);
+                assertEquals(0, offset % 2, "value of tag " + tag + " word-aligned");
+                assertTrue(offset + bytes <= b.capacity(), "value of tag " + tag + " inside the file");
+            }
+        }
+        assertEquals(0, b.getInt(ifd + 2 + 12 * n), "a single IFD");
+        assertEquals("7", TiffTags.read(file).text(GDAL_NODATA));
+    }
+
     @Test
     void noDataTextIsWhatGdalParses() {
         assertEquals("0", GeoTiffWriter.noDataText(0));
