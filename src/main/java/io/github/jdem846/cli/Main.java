@@ -14,6 +14,7 @@ import picocli.CommandLine.Command;
                 + "cast shadows (a modern port of Kevin M. Gill's jDem846).",
         subcommands = {
             CommandLine.HelpCommand.class,
+            InfoCommand.class,
             SunCommand.class,
         })
 public final class Main implements Runnable {

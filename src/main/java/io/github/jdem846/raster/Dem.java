@@ -26,6 +26,10 @@ public final class Dem {
      * @throws IllegalArgumentException if the array length is not width × height
      */
     public Dem(float[] values, GridGeometry geometry, double declaredNoData) {
+        this(values, geometry, declaredNoData, false);
+    }
+
+    private Dem(float[] values, GridGeometry geometry, double declaredNoData, boolean alreadyNormalized) {
         this.values = Objects.requireNonNull(values, "values");
         this.geometry = Objects.requireNonNull(geometry, "geometry");
         long expected = (long) geometry.width() * geometry.height();
@@ -34,7 +38,18 @@ public final class Dem {
                     + geometry.height() + ", got " + values.length);
         }
         this.declaredNoData = declaredNoData;
-        NoData.normalize(values, declaredNoData);
+        if (!alreadyNormalized) {
+            NoData.normalize(values, declaredNoData);
+        }
+    }
+
+    /**
+     * Wraps {@code values} (not copied) whose no-data cells are already NaN, keeping {@code declaredNoData} for
+     * reporting only: cells equal to it are <em>not</em> replaced. For readers that apply the no-data rule
+     * before averaging, where a block mean may legitimately equal the declared value.
+     */
+    public static Dem ofNormalized(float[] values, GridGeometry geometry, double declaredNoData) {
+        return new Dem(values, geometry, declaredNoData, true);
     }
 
     /** A DEM with no declared no-data value (NaN cells are still no-data). */
@@ -97,7 +112,7 @@ public final class Dem {
         for (int r = 0; r < h; r++) {
             System.arraycopy(values, (row + r) * width() + col, out, r * w, w);
         }
-        return new Dem(out, geometry.window(col, row, w, h), declaredNoData);
+        return ofNormalized(out, geometry.window(col, row, w, h), declaredNoData);
     }
 
     @Override

@@ -2,7 +2,11 @@ package io.github.jdem846.raster;
 
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.Ellipsoid;
+import io.github.jdem846.geo.GeoLocator;
+import io.github.jdem846.geo.LatLon;
+import io.github.jdem846.geo.LatLonBox;
 import java.util.Objects;
+import java.util.Optional;
 
 /**
  * The position of a north-up grid on the ground: an axis-aligned affine transform from (column, row) to world
@@ -28,6 +32,7 @@ public final class GridGeometry {
     private final double cellHeight;
     private final CrsInfo crs;
     private final PixelAnchor declaredAnchor;
+    private volatile Optional<GeoLocator> locator; // derived from crs, built on first use
 
     /**
      * @param width          number of columns, ≥ 1
@@ -153,6 +158,29 @@ public final class GridGeometry {
     /** The ellipsoid used for metric sizes (the CRS's, or WGS 84). */
     public Ellipsoid ellipsoid() {
         return crs.ellipsoidOrWgs84();
+    }
+
+    /**
+     * The latitude/longitude locator of this grid's CRS (built once), or empty when the CRS cannot be located
+     * (see {@link GeoLocator#forCrs}).
+     */
+    public Optional<GeoLocator> geoLocator() {
+        Optional<GeoLocator> l = locator;
+        if (l == null) {
+            l = GeoLocator.forCrs(crs);
+            locator = l;
+        }
+        return l;
+    }
+
+    /** Latitude and longitude of the centre of cell ({@code col}, {@code row}), when the CRS allows. */
+    public Optional<LatLon> cellCenterLatLon(int col, int row) {
+        return geoLocator().map(l -> l.toLatLon(centerX(col), centerY(row)));
+    }
+
+    /** The latitude/longitude box of the grid's outer edges, when the CRS allows. */
+    public Optional<LatLonBox> latLonExtent() {
+        return geoLocator().map(l -> l.extent(originX, southY(), eastX(), originY));
     }
 
     /**

@@ -1,0 +1,60 @@
+package io.github.jdem846.cli;
+
+import io.github.jdem846.io.DemInfo;
+import io.github.jdem846.io.DemReader;
+import io.github.jdem846.io.LoadedDem;
+import io.github.jdem846.io.ReadRequest;
+import io.github.jdem846.raster.ElevationStatistics;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code jdem846 info [FILE] [--json]}: format, size, data type, CRS, extent (native and latitude/longitude),
+ * cell size (native and metres), no-data and elevation range of a DEM file, or of the bundled sample when no
+ * FILE is given. Elevations are streamed, so files larger than the heap can be described.
+ */
+@Command(name = "info",
+        mixinStandardHelpOptions = true,
+        versionProvider = VersionProvider.class,
+        description = "Describe a DEM: format, size, data type, CRS, extent, cell size, no-data, min and max.",
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:described", "1:the file cannot be read (the message says why)", "2:bad usage"})
+public final class InfoCommand implements Callable<Integer> {
+
+    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE",
+            description = "GeoTIFF, ESRI GridFloat (.flt), ESRI ASCII grid (.asc), ESRI BIL (.bil) or SRTM .hgt;"
+                    + " the bundled sample DEM when omitted.")
+    Path file;
+
+    @Option(names = "--json", description = "Print one JSON object instead of text.")
+    boolean json;
+
+    @Mixin
+    VerboseOption verbose;
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+        DemInfo info;
+        ElevationStatistics stats;
+        if (file == null) {
+            LoadedDem sample = DemReader.loadSample(ReadRequest.FULL);
+            info = sample.info();
+            stats = sample.dem().statistics();
+        } else {
+            info = DemReader.inspect(file);
+            stats = DemReader.statistics(file);
+        }
+        InfoReport report = new InfoReport(info, stats);
+        spec.commandLine().getOut().println(json ? report.toJson() : report.toText());
+        spec.commandLine().getOut().flush();
+        return 0;
+    }
+}

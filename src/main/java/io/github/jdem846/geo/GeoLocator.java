@@ -1,0 +1,105 @@
+package io.github.jdem846.geo;
+
+import java.util.Objects;
+import java.util.Optional;
+import org.apache.sis.referencing.CRS;
+import org.apache.sis.referencing.crs.AbstractCRS;
+import org.apache.sis.referencing.cs.AxesConvention;
+import org.opengis.referencing.crs.CoordinateReferenceSystem;
+import org.opengis.referencing.crs.GeographicCRS;
+import org.opengis.referencing.crs.ProjectedCRS;
+import org.opengis.referencing.operation.MathTransform;
+import org.opengis.referencing.operation.TransformException;
+import org.opengis.util.FactoryException;
+
+/**
+ * Latitude and longitude of world coordinates of a CRS: the identity for a geographic CRS (x = longitude, y =
+ * latitude), the inverse map projection to the projected CRS's own base geographic CRS otherwise (Apache SIS
+ * {@code CRS.findOperation(...).getMathTransform()}; no datum shift, so no EPSG database is needed).
+ *
+ * <p>Available when the CRS is geographic, or projected and resolved by Apache SIS; see {@link #forCrs}.
+ * Instances are immutable; SIS math transforms are thread-safe.
+ */
+public final class GeoLocator {
+
+    /** Points per grid edge sampled for {@link #extent}, so that curved projected edges are followed. */
+    private static final int EDGE_SAMPLES = 32;
+
+    private final MathTransform toLonLat; // null = identity (geographic)
+
+    private GeoLocator(MathTransform toLonLat) {
+        this.toLonLat = toLonLat;
+    }
+
+    /**
+     * A locator for the CRS, or empty when positions cannot be turned into latitude/longitude (unknown CRS, or a
+     * projected CRS Apache SIS could not resolve offline, e.g. one known only from GeoKeys).
+     */
+    public static Optional<GeoLocator> forCrs(CrsInfo crs) {
+        Objects.requireNonNull(crs, "crs");
+        if (crs.kind() == CrsInfo.Kind.GEOGRAPHIC) {
+            return Optional.of(new GeoLocator(null));
+        }
+        if (crs.kind() != CrsInfo.Kind.PROJECTED || crs.sisCrs() == null) {
+            return Optional.empty();
+        }
+        CoordinateReferenceSystem source = crs.sisCrs();
+        if (!(source instanceof ProjectedCRS projected)) {
+            return Optional.empty();
+        }
+        GeographicCRS target = (GeographicCRS) AbstractCRS.castOrCopy(projected.getBaseCRS())
+                .forConvention(AxesConvention.RIGHT_HANDED);
+        try {
+            return Optional.of(new GeoLocator(CRS.findOperation(source, target, null).getMathTransform()));
+        } catch (FactoryException | RuntimeException e) {
+            return Optional.empty();
+        }
+    }
+
+    /**
+     * Latitude and longitude of world position ({@code x}, {@code y}) in the CRS's units.
+     *
+     * @throws IllegalArgumentException when the position is outside the projection's domain
+     */
+    public LatLon toLatLon(double x, double y) {
+        if (toLonLat == null) {
+            return new LatLon(y, x);
+        }
+        double[] p = {x, y};
+        try {
+            toLonLat.transform(p, 0, p, 0, 1);
+        } catch (TransformException e) {
+            throw new IllegalArgumentException("(" + x + ", " + y + ") cannot be turned into latitude/longitude: "
+                    + e.getMessage(), e);
+        }
+        return new LatLon(p[1], p[0]);
+    }
+
+    /**
+     * The latitude/longitude box of the world rectangle [{@code west}, {@code east}] × [{@code south},
+     * {@code north}], following each edge at {@value #EDGE_SAMPLES} points (a projected rectangle's edges are
+     * curves in latitude/longitude).
+     */
+    public LatLonBox extent(double west, double south, double east, double north) {
+        if (toLonLat == null) {
+            return new LatLonBox(south, north, west, east);
+        }
+        double minLat = Double.POSITIVE_INFINITY;
+        double maxLat = Double.NEGATIVE_INFINITY;
+        double minLon = Double.POSITIVE_INFINITY;
+        double maxLon = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i <= EDGE_SAMPLES; i++) {
+            double t = (double) i / EDGE_SAMPLES;
+            double x = west + t * (east - west);
+            double y = south + t * (north - south);
+            for (LatLon p : new LatLon[] {toLatLon(x, north), toLatLon(x, south), toLatLon(west, y),
+                toLatLon(east, y)}) {
+                minLat = Math.min(minLat, p.latitude());
+                maxLat = Math.max(maxLat, p.latitude());
+                minLon = Math.min(minLon, p.longitude());
+                maxLon = Math.max(maxLon, p.longitude());
+            }
+        }
+        return new LatLonBox(minLat, maxLat, minLon, maxLon);
+    }
+}

@@ -1,0 +1,122 @@
+package io.github.jdem846.io;
+
+import io.github.jdem846.raster.NoData;
+import java.io.IOException;
+
+/**
+ * Reads a window of a {@link RasterSource} band by band and hands over output rows, applying the no-data rule
+ * (declared value → NaN) and, for decimation {@code d > 1}, the box filter: each output cell is the mean of the
+ * valid cells of its {@code d × d} block (partial at the east and south edges), NaN when none is valid. Only one
+ * band of rows is held at a time, so the memory used is independent of the height of the window.
+ */
+final class BlockReader {
+
+    /** Receives output rows in order. */
+    interface RowSink {
+        /** Row {@code outRow} of the output, {@code values[0..width)} (the array is reused afterwards). */
+        void accept(int outRow, float[] values) throws IOException;
+    }
+
+    /** Input cells decoded per band, about 16 MB of float32. */
+    private static final long TARGET_BAND_CELLS = 1L << 22;
+
+    private BlockReader() {
+    }
+
+    /** Output width of a window of {@code w} columns at decimation {@code d}. */
+    static int outputSize(int w, int d) {
+        return (w + d - 1) / d;
+    }
+
+    /**
+     * Reads {@code window} of {@code source} at decimation {@code d} into {@code sink}.
+     *
+     * @param noData the declared no-data value, NaN for none
+     */
+    static void read(RasterSource source, Window.Cells window, int d, double noData, RowSink sink)
+            throws IOException {
+        int w = window.width();
+        int h = window.height();
+        int outW = outputSize(w, d);
+        int outH = outputSize(h, d);
+        int bandRows = bandRows(source.naturalRowBlock(), d, w, h);
+        float[] band = new float[bandRows * w];
+        float[] out = new float[outW];
+        double[] sum = d > 1 ? new double[outW] : null;
+        int[] count = d > 1 ? new int[outW] : null;
+        float nd = NoData.toFloat32(noData);
+        boolean hasNoData = !Double.isNaN(noData);
+        int outRow = 0;
+        for (int r0 = 0; r0 < h; r0 += bandRows) {
+            int n = Math.min(bandRows, h - r0);
+            source.readRows(window.col(), window.row() + r0, w, n, band);
+            if (hasNoData) {
+                for (int i = 0; i < n * w; i++) {
+                    if (band[i] == nd) {
+                        band[i] = Float.NaN;
+                    }
+                }
+            }
+            if (d == 1) {
+                for (int r = 0; r < n; r++) {
+                    System.arraycopy(band, r * w, out, 0, w);
+                    sink.accept(outRow++, out);
+                }
+                continue;
+            }
+            // Bands hold whole blocks (bandRows is a multiple of d), except the last, partial one.
+            for (int b0 = 0; b0 < n; b0 += d) {
+                java.util.Arrays.fill(sum, 0);
+                java.util.Arrays.fill(count, 0);
+                int bn = Math.min(d, n - b0);
+                for (int r = b0; r < b0 + bn; r++) {
+                    int base = r * w;
+                    for (int c = 0; c < w; c++) {
+                        float v = band[base + c];
+                        if (v == v) {
+                            int o = c / d;
+                            sum[o] += v;
+                            count[o]++;
+                        }
+                    }
+                }
+                for (int o = 0; o < outW; o++) {
+                    out[o] = count[o] > 0 ? (float) (sum[o] / count[o]) : Float.NaN;
+                }
+                sink.accept(outRow++, out);
+            }
+        }
+        if (outRow != outH) {
+            throw new IllegalStateException("produced " + outRow + " rows, expected " + outH);
+        }
+    }
+
+    /**
+     * Rows per band: a multiple of {@code d} (so blocks never straddle bands) and of the format's natural block
+     * (so strips and tiles are decoded about once), near {@link #TARGET_BAND_CELLS} cells, at most the window
+     * height rounded up to {@code d}; the whole window when one strip covers it.
+     */
+    static int bandRows(int natural, int d, int w, int h) {
+        long cap = ((long) h + d - 1) / d * d;
+        if (natural >= h) {
+            return (int) cap; // one strip holds the whole window: decode it once
+        }
+        long unit = lcm(Math.max(1, natural), d);
+        if (unit > cap) {
+            unit = d;
+        }
+        long rows = Math.max(unit, (TARGET_BAND_CELLS / Math.max(1, w)) / unit * unit);
+        return (int) Math.max(1, Math.min(rows, cap));
+    }
+
+    private static long lcm(long a, long b) {
+        long x = a;
+        long y = b;
+        while (y != 0) {
+            long t = x % y;
+            x = y;
+            y = t;
+        }
+        return a / x * b;
+    }
+}

@@ -1,0 +1,26 @@
+package io.github.jdem846.io;
+
+/** The DEM file formats {@link DemReader} reads. */
+public enum DemFormat {
+    /** TIFF with GeoTIFF georeferencing (pixels by TwelveMonkeys imageio-tiff, CRS by Apache SIS). */
+    GEOTIFF("GeoTIFF"),
+    /** ESRI GridFloat: raw float32 {@code .flt} with an ESRI {@code .hdr} (and optional {@code .prj}). */
+    GRIDFLOAT("ESRI GridFloat"),
+    /** ESRI ASCII grid ({@code .asc}). */
+    ESRI_ASCII("ESRI ASCII grid"),
+    /** ESRI band-interleaved-by-line raw raster ({@code .bil} + {@code .hdr}), 16-bit as jDem846 read it. */
+    BIL("ESRI BIL"),
+    /** SRTM height tile ({@code N34W118.hgt}): big-endian int16, 1″ or 3″, extent from the file name. */
+    SRTM_HGT("SRTM HGT");
+
+    private final String displayName;
+
+    DemFormat(String displayName) {
+        this.displayName = displayName;
+    }
+
+    /** The name shown to people, e.g. "ESRI GridFloat". */
+    public String displayName() {
+        return displayName;
+    }
+}

@@ -1,0 +1,145 @@
+package io.github.jdem846.io;
+
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.DemFormatException;
+import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.raster.GridGeometry;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.Objects;
+
+/**
+ * The one entry point for reading DEM files: GeoTIFF, ESRI GridFloat, ESRI ASCII grid, ESRI BIL and SRTM HGT,
+ * recognised from their content and extension. A read may be limited to a window and decimated by box
+ * averaging; only the part of the file needed is decoded where the format allows (TIFF strips/tiles, raw rows).
+ *
+ * <p>Every failure is a {@link DemFormatException} whose message names the file and the problem. A grid that
+ * would not fit in the heap is refused before its array is allocated.
+ */
+public final class DemReader {
+
+    /** Resource name of the bundled sample DEM (a 600×400 crop of SRTM 30 m, Big Tujunga, California). */
+    public static final String SAMPLE_RESOURCE =
+            "/io/github/jdem846/sample/bigtujunga_crop600x400_v04_int16_deflate_pred2_tile256.tif";
+
+    private DemReader() {
+    }
+
+    /** Reads the whole file at full resolution. */
+    public static Dem read(Path file) throws IOException {
+        return read(file, ReadRequest.FULL);
+    }
+
+    /**
+     * Reads the window and decimation of {@code request}.
+     *
+     * @throws IllegalArgumentException when the window lies outside the grid (the message gives its size)
+     */
+    public static Dem read(Path file, ReadRequest request) throws IOException {
+        return load(file, request).dem();
+    }
+
+    /** Reads like {@link #read(Path, ReadRequest)} and also returns the file's header information. */
+    public static LoadedDem load(Path file, ReadRequest request) throws IOException {
+        Objects.requireNonNull(request, "request");
+        try (RasterSource source = open(file)) {
+            DemInfo info = source.info();
+            Window.Cells cells = request.window() == null
+                    ? new Window.Cells(0, 0, info.width(), info.height())
+                    : request.window().resolve(info.geometry());
+            int d = request.decimation();
+            int outW = BlockReader.outputSize(cells.width(), d);
+            int outH = BlockReader.outputSize(cells.height(), d);
+            MemoryGuard.requireFits(file, outW, outH, "read a window or a decimated version, or give Java more"
+                    + " heap with -Xmx");
+            float[] values = new float[outW * outH];
+            BlockReader.read(source, cells, d, info.noDataOrNaN(),
+                    (row, v) -> System.arraycopy(v, 0, values, row * outW, outW));
+            GridGeometry g = info.geometry().window(cells.col(), cells.row(), cells.width(), cells.height());
+            if (d > 1) {
+                g = g.decimate(d, d);
+            }
+            return new LoadedDem(info, Dem.ofNormalized(values, g, info.noDataOrNaN()));
+        }
+    }
+
+    /** Reads the header only: format, size, data type, georeferencing, CRS and declared no-data. */
+    public static DemInfo inspect(Path file) throws IOException {
+        try (RasterSource source = open(file)) {
+            return source.info();
+        }
+    }
+
+    /**
+     * Min, max and valid count of the whole file, streamed band by band without holding the grid in memory (so
+     * it works for grids larger than the heap).
+     */
+    public static ElevationStatistics statistics(Path file) throws IOException {
+        try (RasterSource source = open(file)) {
+            DemInfo info = source.info();
+            double[] acc = {Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, 0};
+            BlockReader.read(source, new Window.Cells(0, 0, info.width(), info.height()), 1, info.noDataOrNaN(),
+                    (row, v) -> {
+                        for (int i = 0; i < info.width(); i++) {
+                            float x = v[i];
+                            if (x == x) {
+                                acc[0] = Math.min(acc[0], x);
+                                acc[1] = Math.max(acc[1], x);
+                                acc[2]++;
+                            }
+                        }
+                    });
+            long total = (long) info.width() * info.height();
+            long valid = (long) acc[2];
+            return valid == 0 ? new ElevationStatistics(Double.NaN, Double.NaN, 0, total)
+                    : new ElevationStatistics(acc[0], acc[1], valid, total);
+        }
+    }
+
+    /** Reads the bundled sample DEM (see {@link #SAMPLE_RESOURCE}). */
+    public static Dem readSample() throws IOException {
+        return loadSample(ReadRequest.FULL).dem();
+    }
+
+    /** Reads the bundled sample DEM with its header information. */
+    public static LoadedDem loadSample(ReadRequest request) throws IOException {
+        Path tmp = Files.createTempFile("jdem846-sample-", ".tif");
+        try {
+            try (InputStream in = DemReader.class.getResourceAsStream(SAMPLE_RESOURCE)) {
+                if (in == null) {
+                    throw new IOException("the bundled sample " + SAMPLE_RESOURCE + " is missing from the jar");
+                }
+                Files.copy(in, tmp, StandardCopyOption.REPLACE_EXISTING);
+            }
+            LoadedDem loaded = load(tmp, request);
+            String name = "bundled sample " + SAMPLE_RESOURCE.substring(SAMPLE_RESOURCE.lastIndexOf('/') + 1);
+            DemInfo i = loaded.info();
+            return new LoadedDem(new DemInfo(name, i.format(), i.dataType(), i.bands(), i.geometry(),
+                    i.declaredNoData(), i.notices()), loaded.dem());
+        } finally {
+            Files.deleteIfExists(tmp);
+        }
+    }
+
+    private static RasterSource open(Path file) throws IOException {
+        Objects.requireNonNull(file, "file");
+        FormatDetector.Detected detected = FormatDetector.detect(file);
+        Path data = detected.dataFile();
+        try {
+            return switch (detected.format()) {
+                case GEOTIFF -> GeoTiffSource.open(data);
+                case GRIDFLOAT -> GridFloatFormat.open(data);
+                case ESRI_ASCII -> EsriAsciiSource.open(data);
+                case BIL -> BilFormat.open(data);
+                case SRTM_HGT -> HgtFormat.open(data);
+            };
+        } catch (DemFormatException e) {
+            throw e;
+        } catch (IOException e) {
+            throw new DemFormatException(data, "cannot be read: " + e.getMessage(), e);
+        }
+    }
+}

@@ -1,0 +1,124 @@
+package io.github.jdem846.io;
+
+import java.util.HashMap;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * The GeoKeys of a GeoTIFF (GeoKeyDirectoryTag 34735 with GeoDoubleParamsTag 34736 and GeoAsciiParamsTag 34737;
+ * OGC GeoTIFF 1.1, section 7.1.3), parsed by hand from the TIFF fields.
+ */
+final class GeoKeyDirectory {
+
+    static final int GT_MODEL_TYPE = 1024;
+    static final int GT_RASTER_TYPE = 1025;
+    static final int GT_CITATION = 1026;
+    static final int GEOGRAPHIC_TYPE = 2048;
+    static final int GEOG_CITATION = 2049;
+    static final int GEOG_GEODETIC_DATUM = 2050;
+    static final int GEOG_ANGULAR_UNITS = 2054;
+    static final int GEOG_ELLIPSOID = 2056;
+    static final int GEOG_SEMI_MAJOR_AXIS = 2057;
+    static final int GEOG_SEMI_MINOR_AXIS = 2058;
+    static final int GEOG_INV_FLATTENING = 2059;
+    static final int PROJECTED_CS_TYPE = 3072;
+    static final int PCS_CITATION = 3073;
+    static final int PROJ_LINEAR_UNITS = 3076;
+    static final int PROJ_LINEAR_UNIT_SIZE = 3077;
+
+    /** GeoTIFF's "user-defined" code. */
+    static final int USER_DEFINED = 32767;
+
+    private final Map<Integer, Object> keys; // Integer, double[] or String
+
+    private GeoKeyDirectory(Map<Integer, Object> keys) {
+        this.keys = keys;
+    }
+
+    /** An empty directory (no GeoKeys). */
+    static GeoKeyDirectory empty() {
+        return new GeoKeyDirectory(Map.of());
+    }
+
+    /**
+     * Parses the directory.
+     *
+     * @throws IllegalArgumentException when it is malformed (the message says how)
+     */
+    static GeoKeyDirectory parse(long[] dir, double[] doubles, String ascii) {
+        if (dir.length < 4) {
+            throw new IllegalArgumentException("the GeoKey directory has " + dir.length + " values, fewer than its"
+                    + " 4-value header");
+        }
+        int count = (int) dir[3];
+        if (dir.length < 4 + 4L * count) {
+            throw new IllegalArgumentException("the GeoKey directory announces " + count + " keys but holds "
+                    + (dir.length - 4) / 4);
+        }
+        Map<Integer, Object> map = new HashMap<>();
+        for (int i = 0; i < count; i++) {
+            int at = 4 + 4 * i;
+            int id = (int) dir[at];
+            int location = (int) dir[at + 1];
+            int n = (int) dir[at + 2];
+            int value = (int) dir[at + 3];
+            if (location == 0) {
+                map.put(id, value);
+            } else if (location == TiffFields.GEO_DOUBLE_PARAMS) {
+                if (doubles == null || value < 0 || value + n > doubles.length) {
+                    throw new IllegalArgumentException("GeoKey " + id + " points outside GeoDoubleParams");
+                }
+                double[] d = new double[n];
+                System.arraycopy(doubles, value, d, 0, n);
+                map.put(id, d);
+            } else if (location == TiffFields.GEO_ASCII_PARAMS) {
+                if (ascii == null || value < 0 || value + n > ascii.length()) {
+                    throw new IllegalArgumentException("GeoKey " + id + " points outside GeoAsciiParams");
+                }
+                String s = ascii.substring(value, value + n);
+                if (s.endsWith("|")) {
+                    s = s.substring(0, s.length() - 1);
+                }
+                map.put(id, s.strip());
+            }
+        }
+        return new GeoKeyDirectory(map);
+    }
+
+    boolean isEmpty() {
+        return keys.isEmpty();
+    }
+
+    boolean has(int key) {
+        return keys.containsKey(key);
+    }
+
+    /** A SHORT key. */
+    Optional<Integer> code(int key) {
+        return keys.get(key) instanceof Integer i ? Optional.of(i) : Optional.empty();
+    }
+
+    /** A DOUBLE key's first value. */
+    Optional<Double> number(int key) {
+        return keys.get(key) instanceof double[] d && d.length > 0 ? Optional.of(d[0]) : Optional.empty();
+    }
+
+    /** An ASCII key, without GDAL's "PCS Name = " style prefixes. */
+    Optional<String> text(int key) {
+        if (!(keys.get(key) instanceof String s) || s.isBlank()) {
+            return Optional.empty();
+        }
+        String t = s;
+        for (String prefix : new String[] {"PCS Name = ", "GCS Name = "}) {
+            if (t.startsWith(prefix)) {
+                t = t.substring(prefix.length());
+            }
+        }
+        int bar = t.indexOf('|');
+        if (bar >= 0) {
+            t = t.substring(0, bar);
+        }
+        t = t.strip();
+        return t.isEmpty() || t.equalsIgnoreCase("unknown") ? Optional.empty() : Optional.of(t);
+    }
+}

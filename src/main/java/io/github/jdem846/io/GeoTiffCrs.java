@@ -1,0 +1,137 @@
+package io.github.jdem846.io;
+
+import static io.github.jdem846.io.GeoKeyDirectory.GEOGRAPHIC_TYPE;
+import static io.github.jdem846.io.GeoKeyDirectory.GEOG_ANGULAR_UNITS;
+import static io.github.jdem846.io.GeoKeyDirectory.GEOG_CITATION;
+import static io.github.jdem846.io.GeoKeyDirectory.GEOG_ELLIPSOID;
+import static io.github.jdem846.io.GeoKeyDirectory.GEOG_GEODETIC_DATUM;
+import static io.github.jdem846.io.GeoKeyDirectory.GEOG_INV_FLATTENING;
+import static io.github.jdem846.io.GeoKeyDirectory.GEOG_SEMI_MAJOR_AXIS;
+import static io.github.jdem846.io.GeoKeyDirectory.GEOG_SEMI_MINOR_AXIS;
+import static io.github.jdem846.io.GeoKeyDirectory.GT_CITATION;
+import static io.github.jdem846.io.GeoKeyDirectory.GT_MODEL_TYPE;
+import static io.github.jdem846.io.GeoKeyDirectory.PCS_CITATION;
+import static io.github.jdem846.io.GeoKeyDirectory.PROJECTED_CS_TYPE;
+import static io.github.jdem846.io.GeoKeyDirectory.PROJ_LINEAR_UNITS;
+import static io.github.jdem846.io.GeoKeyDirectory.PROJ_LINEAR_UNIT_SIZE;
+import static io.github.jdem846.io.GeoKeyDirectory.USER_DEFINED;
+
+import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.geo.CrsResolver;
+import io.github.jdem846.geo.Ellipsoid;
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * The CRS of a GeoTIFF from its GeoKeys: the EPSG code of {@code ProjectedCSTypeGeoKey} or
+ * {@code GeographicTypeGeoKey} resolved by Apache SIS when it can do so offline; otherwise what the keys say on
+ * their own (model type, {@code ProjLinearUnitsGeoKey}, ellipsoid or datum code or axes, citations), which is
+ * enough for metric cell sizes but not for latitude/longitude of a projected grid. Never fails: what cannot be
+ * known is reported in the notices.
+ */
+final class GeoTiffCrs {
+
+    private static final int MODEL_PROJECTED = 1;
+    private static final int MODEL_GEOGRAPHIC = 2;
+    private static final int MODEL_GEOCENTRIC = 3;
+    private static final int ANGULAR_DEGREE = 9102;
+
+    private GeoTiffCrs() {
+    }
+
+    static CrsInfo resolve(GeoKeyDirectory keys, List<String> notices) {
+        int model = keys.code(GT_MODEL_TYPE).orElse(keys.has(PROJECTED_CS_TYPE) ? MODEL_PROJECTED
+                : keys.has(GEOGRAPHIC_TYPE) ? MODEL_GEOGRAPHIC : 0);
+        return switch (model) {
+            case MODEL_PROJECTED -> projected(keys, notices);
+            case MODEL_GEOGRAPHIC -> geographic(keys, notices);
+            case MODEL_GEOCENTRIC -> {
+                notices.add("the GeoKeys declare a geocentric model, which a DEM grid cannot use: CRS unknown");
+                yield CrsInfo.UNKNOWN;
+            }
+            default -> {
+                notices.add("the GeoKeys name no model type or CRS: CRS unknown, cell sizes in metres unknown");
+                yield CrsInfo.UNKNOWN;
+            }
+        };
+    }
+
+    private static CrsInfo projected(GeoKeyDirectory keys, List<String> notices) {
+        Integer code = keys.code(PROJECTED_CS_TYPE).filter(c -> c > 0 && c != USER_DEFINED).orElse(null);
+        if (code != null) {
+            Optional<CrsInfo> sis = CrsResolver.fromEpsg(code);
+            if (sis.isPresent() && sis.get().kind() == CrsInfo.Kind.PROJECTED) {
+                return sis.get();
+            }
+        }
+        String name = keys.text(PCS_CITATION).or(() -> keys.text(GT_CITATION)).orElse(null);
+        String what = code != null ? "EPSG:" + code : "a user-defined projected CRS";
+        Ellipsoid ellipsoid = ellipsoid(keys).orElse(null);
+        double unit = Double.NaN;
+        String unitName = null;
+        Optional<Integer> unitCode = keys.code(PROJ_LINEAR_UNITS);
+        if (unitCode.isPresent() && unitCode.get() == USER_DEFINED) {
+            unit = keys.number(PROJ_LINEAR_UNIT_SIZE).orElse(Double.NaN);
+            unitName = unit + " m (ProjLinearUnitSizeGeoKey)";
+        } else if (unitCode.isPresent()) {
+            unit = CrsResolver.linearUnitMetres(unitCode.get());
+            unitName = CrsResolver.linearUnitName(unitCode.get());
+        }
+        if (!(unit > 0)) {
+            notices.add(what + " is not known to Apache SIS offline and the GeoKeys give no usable linear unit: "
+                    + "cell sizes in metres unknown, no latitude/longitude");
+            return new CrsInfo(name, code, CrsInfo.Kind.UNKNOWN, Double.NaN, ellipsoid, null, false);
+        }
+        notices.add(what + " is not known to Apache SIS offline: projected CRS taken from the GeoKeys (unit "
+                + unitName + "); latitude/longitude unavailable");
+        return new CrsInfo(name, code, CrsInfo.Kind.PROJECTED, unit, ellipsoid, null, false);
+    }
+
+    private static CrsInfo geographic(GeoKeyDirectory keys, List<String> notices) {
+        Integer code = keys.code(GEOGRAPHIC_TYPE).filter(c -> c > 0 && c != USER_DEFINED).orElse(null);
+        if (code != null) {
+            Optional<CrsInfo> sis = CrsResolver.fromEpsg(code);
+            if (sis.isPresent() && sis.get().kind() == CrsInfo.Kind.GEOGRAPHIC) {
+                return sis.get();
+            }
+        }
+        String name = keys.text(GEOG_CITATION).or(() -> keys.text(GT_CITATION)).orElse(null);
+        String what = code != null ? "EPSG:" + code : "a user-defined geographic CRS";
+        int angular = keys.code(GEOG_ANGULAR_UNITS).orElse(ANGULAR_DEGREE);
+        if (angular != ANGULAR_DEGREE) {
+            notices.add(what + " uses angular unit EPSG " + angular + ", not degrees: CRS treated as unknown");
+            return new CrsInfo(name, code, CrsInfo.Kind.UNKNOWN, Double.NaN, null, null, false);
+        }
+        Optional<Ellipsoid> ellipsoid = ellipsoid(keys);
+        notices.add(what + " is not known to Apache SIS offline: geographic CRS taken from the GeoKeys"
+                + (ellipsoid.isPresent() ? " (ellipsoid " + ellipsoid.get().name() + ")"
+                : " (no ellipsoid given: WGS 84 used for metric sizes)"));
+        return CrsInfo.geographic(name, code, ellipsoid.orElse(null));
+    }
+
+    /** The ellipsoid from its code, its axes, the datum code or the geographic CRS code, in that order. */
+    static Optional<Ellipsoid> ellipsoid(GeoKeyDirectory keys) {
+        Optional<Ellipsoid> byCode = keys.code(GEOG_ELLIPSOID).filter(c -> c != USER_DEFINED)
+                .flatMap(CrsResolver::ellipsoidFromEpsg);
+        if (byCode.isPresent()) {
+            return byCode;
+        }
+        Optional<Double> a = keys.number(GEOG_SEMI_MAJOR_AXIS);
+        if (a.isPresent() && a.get() > 0) {
+            Optional<Double> invF = keys.number(GEOG_INV_FLATTENING);
+            Optional<Double> b = keys.number(GEOG_SEMI_MINOR_AXIS);
+            double inverseFlattening = invF.orElseGet(() -> b.map(bb -> bb >= a.get() ? 0 : a.get() / (a.get() - bb))
+                    .orElse(Double.NaN));
+            if (inverseFlattening == 0 || inverseFlattening > 1) {
+                return Optional.of(new Ellipsoid("from GeoKeys", a.get(), inverseFlattening));
+            }
+        }
+        Optional<Ellipsoid> byDatum = keys.code(GEOG_GEODETIC_DATUM).filter(c -> c != USER_DEFINED)
+                .flatMap(CrsResolver::ellipsoidOfDatumEpsg);
+        if (byDatum.isPresent()) {
+            return byDatum;
+        }
+        return keys.code(GEOGRAPHIC_TYPE).filter(c -> c != USER_DEFINED).flatMap(CrsResolver::fromEpsg)
+                .map(CrsInfo::ellipsoid);
+    }
+}

@@ -1,0 +1,327 @@
+package io.github.jdem846.io;
+
+import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.raster.DemFormatException;
+import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.raster.PixelAnchor;
+import com.twelvemonkeys.imageio.plugins.tiff.TIFFImageReaderSpi;
+import java.awt.Rectangle;
+import java.awt.image.DataBuffer;
+import java.awt.image.Raster;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import javax.imageio.ImageReadParam;
+import javax.imageio.ImageReader;
+import javax.imageio.metadata.IIOMetadata;
+import javax.imageio.stream.FileImageInputStream;
+import javax.imageio.stream.ImageInputStream;
+
+/**
+ * GeoTIFF: pixels decoded by TwelveMonkeys imageio-tiff (its reader SPI is instantiated directly, not looked up in
+ * the global ImageIO registry), georeferencing from ModelPixelScale + ModelTiepoint or ModelTransformation, CRS from
+ * the GeoKeys ({@link GeoTiffCrs}), no-data from GDAL_NODATA. Rotated or sheared grids are refused. Rows are read
+ * through {@link ImageReadParam#setSourceRegion}, so only the strips (or, for tiled files, the rows of tiles) of a
+ * window are decoded.
+ */
+final class GeoTiffSource implements RasterSource {
+
+    private final Path file;
+    private final ImageInputStream stream;
+    private final ImageReader reader;
+    private final DemInfo info;
+    private final int rowBlock;
+    private final boolean tiled;
+
+    private GeoTiffSource(Path file, ImageInputStream stream, ImageReader reader, DemInfo info, int rowBlock,
+                          boolean tiled) {
+        this.file = file;
+        this.stream = stream;
+        this.reader = reader;
+        this.info = info;
+        this.rowBlock = rowBlock;
+        this.tiled = tiled;
+    }
+
+    static RasterSource open(Path tif) throws IOException {
+        ImageInputStream stream = new FileImageInputStream(tif.toFile());
+        ImageReader reader = null;
+        try {
+            reader = new TIFFImageReaderSpi().createReaderInstance();
+            reader.setInput(stream, true, false);
+            int width = reader.getWidth(0);
+            int height = reader.getHeight(0);
+            IIOMetadata metadata = reader.getImageMetadata(0);
+            TiffFields fields = TiffFields.of(metadata);
+            List<String> notices = new ArrayList<>();
+            SampleType type = sampleType(tif, fields);
+            int bands = fields.intValue(TiffFields.SAMPLES_PER_PIXEL, 1);
+            if (bands > 1) {
+                notices.add("the file has " + bands + " bands; band 1 is read");
+            }
+            checkNotTruncated(tif, fields);
+            GridGeometry geometry = geometry(tif, fields, width, height, notices);
+            Double noData = noData(fields, notices);
+            boolean tiled = fields.has(TiffFields.TILE_OFFSETS);
+            int rowBlock = tiled ? fields.intValue(TiffFields.TILE_LENGTH, 1)
+                    : Math.max(1, Math.min(height, fields.intValue(TiffFields.ROWS_PER_STRIP, height)));
+            DemInfo info = new DemInfo(tif.toString(), DemFormat.GEOTIFF, type, bands, geometry, noData, notices);
+            return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled);
+        } catch (DemFormatException e) {
+            closeQuietly(reader, stream);
+            throw e;
+        } catch (IOException | RuntimeException e) {
+            closeQuietly(reader, stream);
+            throw new DemFormatException(tif, "not a readable TIFF (truncated or corrupt?): " + describe(e), e);
+        }
+    }
+
+    @Override
+    public DemInfo info() {
+        return info;
+    }
+
+    @Override
+    public int naturalRowBlock() {
+        return rowBlock;
+    }
+
+    @Override
+    public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
+        ImageReadParam param = reader.getDefaultReadParam();
+        // TwelveMonkeys 3.15.0 fails on tiled images when the source region is narrower than the image
+        // (haraldk/TwelveMonkeys#746), so tiled files are read in full-width row bands and cropped here.
+        int readCol = tiled ? 0 : col;
+        int readWidth = tiled ? info.width() : width;
+        param.setSourceRegion(new Rectangle(readCol, row, readWidth, rows));
+        Raster raster;
+        try {
+            raster = reader.readRaster(0, param);
+        } catch (IOException | RuntimeException e) {
+            throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                    + " (truncated or corrupt TIFF?): " + describe(e), e);
+        }
+        if (raster.getWidth() < readWidth || raster.getHeight() < rows) {
+            throw new DemFormatException(file, "the TIFF decoder returned " + raster.getWidth() + "×"
+                    + raster.getHeight() + " cells for a " + readWidth + "×" + rows + " region");
+        }
+        copyBand0(raster, col - readCol, width, rows, dst);
+    }
+
+    /**
+     * Columns {@code [skip, skip+width)} of band 0 of the raster as float32, undoing Java's lack of signed bytes
+     * and unsigned ints.
+     */
+    private void copyBand0(Raster raster, int skip, int width, int rows, float[] dst) {
+        int x0 = raster.getMinX() + skip;
+        int y0 = raster.getMinY();
+        SampleType type = info.dataType();
+        int dataType = raster.getDataBuffer().getDataType();
+        if (dataType == DataBuffer.TYPE_INT || dataType == DataBuffer.TYPE_BYTE) {
+            int[] row = new int[width];
+            for (int r = 0; r < rows; r++) {
+                raster.getSamples(x0, y0 + r, width, 1, 0, row);
+                for (int c = 0; c < width; c++) {
+                    int v = row[c];
+                    dst[r * width + c] = switch (type) {
+                        case INT8 -> (byte) v;
+                        case UINT32 -> v & 0xFFFFFFFFL;
+                        default -> v;
+                    };
+                }
+            }
+        } else {
+            float[] row = new float[width];
+            for (int r = 0; r < rows; r++) {
+                raster.getSamples(x0, y0 + r, width, 1, 0, row);
+                System.arraycopy(row, 0, dst, r * width, width);
+            }
+        }
+    }
+
+    @Override
+    public void close() throws IOException {
+        reader.dispose();
+        stream.close();
+    }
+
+    /** The sample type from BitsPerSample and SampleFormat, refusing what a DEM reader cannot decode. */
+    private static SampleType sampleType(Path tif, TiffFields fields) throws DemFormatException {
+        long[] bits = fields.has(TiffFields.BITS_PER_SAMPLE) ? fields.longs(TiffFields.BITS_PER_SAMPLE)
+                : new long[] {1};
+        long[] formats = fields.has(TiffFields.SAMPLE_FORMAT) ? fields.longs(TiffFields.SAMPLE_FORMAT)
+                : new long[] {1};
+        int b = (int) bits[0];
+        int f = (int) formats[0];
+        SampleType t = switch (f) {
+            case 1 -> b == 8 ? SampleType.UINT8 : b == 16 ? SampleType.UINT16 : b == 32 ? SampleType.UINT32 : null;
+            case 2 -> b == 8 ? SampleType.INT8 : b == 16 ? SampleType.INT16 : b == 32 ? SampleType.INT32 : null;
+            case 3 -> b == 32 ? SampleType.FLOAT32 : b == 64 ? SampleType.FLOAT64 : null;
+            default -> null;
+        };
+        if (t == null) {
+            String kind = switch (f) {
+                case 1 -> "unsigned integer";
+                case 2 -> "signed integer";
+                case 3 -> "floating point";
+                case 4 -> "undefined";
+                case 5 -> "complex integer";
+                case 6 -> "complex floating point";
+                default -> "SampleFormat " + f;
+            };
+            throw new DemFormatException(tif, "unsupported sample format: " + b + "-bit " + kind + " (SampleFormat "
+                    + f + "); elevations must be 8/16/32-bit signed or unsigned integers or 32/64-bit floats");
+        }
+        return t;
+    }
+
+    /** Refuses a file whose strips or tiles reach past its end, before the decoder pads them silently. */
+    private static void checkNotTruncated(Path tif, TiffFields fields) throws IOException {
+        boolean tiled = fields.has(TiffFields.TILE_OFFSETS);
+        long[] offsets = fields.longs(tiled ? TiffFields.TILE_OFFSETS : TiffFields.STRIP_OFFSETS);
+        long[] counts = fields.longs(tiled ? TiffFields.TILE_BYTE_COUNTS : TiffFields.STRIP_BYTE_COUNTS);
+        if (offsets.length == 0) {
+            throw new DemFormatException(tif, "the TIFF has no " + (tiled ? "tile" : "strip") + " offsets");
+        }
+        long end = 0;
+        int n = Math.min(offsets.length, counts.length);
+        for (int i = 0; i < n; i++) {
+            end = Math.max(end, offsets[i] + counts[i]);
+        }
+        long size = Files.size(tif);
+        if (end > size) {
+            throw new DemFormatException(tif, "truncated TIFF: its " + (tiled ? "tiles" : "strips")
+                    + " reach byte " + end + " but the file has " + size + " bytes");
+        }
+    }
+
+    /** Grid geometry from ModelTransformation or ModelTiepoint + ModelPixelScale, and the GeoKeys. */
+    private static GridGeometry geometry(Path tif, TiffFields fields, int width, int height, List<String> notices)
+            throws DemFormatException {
+        GeoKeyDirectory keys = GeoKeyDirectory.empty();
+        if (fields.has(TiffFields.GEO_KEY_DIRECTORY)) {
+            try {
+                keys = GeoKeyDirectory.parse(fields.longs(TiffFields.GEO_KEY_DIRECTORY),
+                        fields.has(TiffFields.GEO_DOUBLE_PARAMS) ? fields.doubles(TiffFields.GEO_DOUBLE_PARAMS) : null,
+                        fields.ascii(TiffFields.GEO_ASCII_PARAMS));
+            } catch (IllegalArgumentException e) {
+                notices.add("GeoKeys ignored: " + e.getMessage());
+            }
+        }
+        double originX;
+        double originY;
+        double cellW;
+        double cellH;
+        boolean georeferenced = true;
+        if (fields.has(TiffFields.MODEL_TRANSFORMATION)) {
+            double[] m = fields.doubles(TiffFields.MODEL_TRANSFORMATION);
+            if (m.length < 8) {
+                throw new DemFormatException(tif, "ModelTransformationTag has " + m.length + " values, not 16");
+            }
+            if (m[1] != 0 || m[4] != 0) {
+                throw new DemFormatException(tif, "the grid is rotated or sheared (ModelTransformation row/column"
+                        + " terms " + m[1] + ", " + m[4] + "); only north-up grids are read: warp it first, e.g."
+                        + " gdalwarp");
+            }
+            if (!(m[0] > 0) || !(m[5] < 0)) {
+                throw new DemFormatException(tif, "the grid is flipped (ModelTransformation scales " + m[0] + ", "
+                        + m[5] + "); only north-up grids with columns going east are read");
+            }
+            cellW = m[0];
+            cellH = -m[5];
+            originX = m[3];
+            originY = m[7];
+        } else if (fields.has(TiffFields.MODEL_TIEPOINT) && fields.has(TiffFields.MODEL_PIXEL_SCALE)) {
+            double[] t = fields.doubles(TiffFields.MODEL_TIEPOINT);
+            double[] s = fields.doubles(TiffFields.MODEL_PIXEL_SCALE);
+            if (t.length < 6 || s.length < 2) {
+                throw new DemFormatException(tif, "ModelTiepoint/ModelPixelScale have too few values ("
+                        + t.length + ", " + s.length + ")");
+            }
+            if (t.length > 6) {
+                notices.add("the file has " + t.length / 6 + " tie points; the first is used with the pixel scale");
+            }
+            if (!(s[0] > 0) || !(s[1] > 0)) {
+                throw new DemFormatException(tif, "ModelPixelScale is " + s[0] + ", " + s[1]
+                        + "; both must be positive (north-up grid)");
+            }
+            cellW = s[0];
+            cellH = s[1];
+            originX = t[3] - t[0] * cellW;
+            originY = t[4] + t[1] * cellH;
+        } else {
+            if (fields.has(TiffFields.MODEL_TIEPOINT)) {
+                throw new DemFormatException(tif, "the file is georeferenced by tie points (ground control points)"
+                        + " without a pixel scale; warp it first, e.g. gdalwarp");
+            }
+            notices.add("no georeferencing (no ModelPixelScale/ModelTiepoint/ModelTransformation): cells are"
+                    + " 1 × 1 unit with the origin at the north-west corner of row 0");
+            georeferenced = false;
+            cellW = 1;
+            cellH = 1;
+            originX = 0;
+            originY = height;
+        }
+        PixelAnchor anchor = PixelAnchor.CORNER;
+        if (keys.code(GeoKeyDirectory.GT_RASTER_TYPE).orElse(1) == 2) {
+            // PixelIsPoint: the tie point names the centre of the cell; move to its outer corner.
+            anchor = PixelAnchor.CENTER;
+            originX -= cellW / 2;
+            originY += cellH / 2;
+        }
+        if (!Double.isFinite(originX) || !Double.isFinite(originY)) {
+            throw new DemFormatException(tif, "the georeferencing gives a non-finite origin (" + originX + ", "
+                    + originY + ")");
+        }
+        CrsInfo crs;
+        if (!keys.isEmpty()) {
+            crs = GeoTiffCrs.resolve(keys, notices);
+        } else if (georeferenced) {
+            crs = SidecarCrs.assumeFromExtent(new EsriGridLayout(width, height, originX, originY, cellW, cellH,
+                    anchor), "no GeoKeys", notices);
+        } else {
+            crs = CrsInfo.UNKNOWN;
+        }
+        return new GridGeometry(width, height, originX, originY, cellW, cellH, crs, anchor);
+    }
+
+    /** GDAL_NODATA: a number or "nan"; null when absent. */
+    private static Double noData(TiffFields fields, List<String> notices) {
+        String text = fields.ascii(TiffFields.GDAL_NODATA);
+        if (text == null) {
+            return null;
+        }
+        String t = text.strip().toLowerCase(Locale.ROOT);
+        if (t.isEmpty()) {
+            return null;
+        }
+        if (t.equals("nan") || t.equals("-nan")) {
+            return Double.NaN;
+        }
+        try {
+            return Double.parseDouble(t);
+        } catch (NumberFormatException e) {
+            notices.add("GDAL_NODATA '" + text.strip() + "' is not a number and was ignored");
+            return null;
+        }
+    }
+
+    private static String describe(Throwable e) {
+        String m = e.getMessage();
+        return e.getClass().getSimpleName() + (m != null && !m.isBlank() ? ": " + m : "");
+    }
+
+    private static void closeQuietly(ImageReader reader, ImageInputStream stream) {
+        if (reader != null) {
+            reader.dispose();
+        }
+        try {
+            stream.close();
+        } catch (IOException ignored) {
+            // already failing
+        }
+    }
+}

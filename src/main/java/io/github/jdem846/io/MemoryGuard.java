@@ -1,0 +1,50 @@
+package io.github.jdem846.io;
+
+import io.github.jdem846.raster.DemFormatException;
+import java.nio.file.Path;
+import java.util.Locale;
+
+/** Refuses, before allocating, a grid whose float32 array would not fit in the Java heap. */
+final class MemoryGuard {
+
+    /** Largest Java array length the JVM allows in practice. */
+    private static final long MAX_ARRAY = Integer.MAX_VALUE - 8L;
+
+    private MemoryGuard() {
+    }
+
+    /**
+     * Checks that {@code width × height} float32 cells fit in the heap now available.
+     *
+     * @throws DemFormatException saying how much memory the grid needs and how much the heap allows
+     */
+    static void requireFits(Path file, int width, int height, String advice) throws DemFormatException {
+        long cells = (long) width * height;
+        long bytes = cells * Float.BYTES;
+        Runtime rt = Runtime.getRuntime();
+        long max = rt.maxMemory();
+        long available = max - (rt.totalMemory() - rt.freeMemory());
+        if (cells > MAX_ARRAY) {
+            throw new DemFormatException(file, "a " + width + " × " + height + " grid has " + cells
+                    + " cells, more than one Java array can hold (" + MAX_ARRAY + "); it would need "
+                    + human(bytes) + " (" + advice + ")");
+        }
+        if (bytes > available) {
+            throw new DemFormatException(file, "a " + width + " × " + height + " grid needs " + human(bytes)
+                    + " as float32, but the Java heap allows at most " + human(max) + " (Runtime.maxMemory()), "
+                    + human(Math.max(0, available)) + " of it free; " + advice);
+        }
+    }
+
+    /** Bytes in binary units, e.g. "37.3 GiB". */
+    static String human(long bytes) {
+        String[] units = {"bytes", "KiB", "MiB", "GiB", "TiB"};
+        double v = bytes;
+        int u = 0;
+        while (v >= 1024 && u < units.length - 1) {
+            v /= 1024;
+            u++;
+        }
+        return u == 0 ? bytes + " bytes" : String.format(Locale.ROOT, "%.1f %s", v, units[u]);
+    }
+}

@@ -1,0 +1,34 @@
+package io.github.jdem846.io;
+
+import io.github.jdem846.raster.DemFormatException;
+import java.io.Closeable;
+import java.io.IOException;
+
+/**
+ * An open DEM file of one format: its header and random access to rows of band 1. Implementations are not
+ * thread-safe.
+ */
+interface RasterSource extends Closeable {
+
+    /** The header information (no pixels decoded). */
+    DemInfo info();
+
+    /**
+     * Reads columns {@code [col, col+width)} of rows {@code [row, row+rows)} as float32 into {@code dst}
+     * (row-major, {@code width × rows} values), exactly as stored: the no-data rule is not applied here.
+     *
+     * @throws DemFormatException (an IOException) when the data cannot be decoded; the message names the file
+     */
+    void readRows(int col, int row, int width, int rows, float[] dst) throws IOException;
+
+    /**
+     * The number of rows the format decodes together (TIFF strip or tile height; 1 for raw rows), so that reads
+     * can be aligned to it.
+     */
+    default int naturalRowBlock() {
+        return 1;
+    }
+
+    @Override
+    void close() throws IOException;
+}

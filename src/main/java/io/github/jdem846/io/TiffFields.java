@@ -1,0 +1,112 @@
+package io.github.jdem846.io;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import javax.imageio.metadata.IIOMetadata;
+import org.w3c.dom.NamedNodeMap;
+import org.w3c.dom.Node;
+
+/**
+ * The fields of a TIFF image file directory, taken from the standard TIFF metadata tree
+ * ({@code com_sun_media_imageio_plugins_tiff_image_1.0}) that TwelveMonkeys imageio-tiff exposes: for each tag
+ * number, its values as text (numbers or one ASCII string).
+ */
+final class TiffFields {
+
+    static final String NATIVE_FORMAT = "com_sun_media_imageio_plugins_tiff_image_1.0";
+
+    static final int BITS_PER_SAMPLE = 258;
+    static final int COMPRESSION = 259;
+    static final int STRIP_OFFSETS = 273;
+    static final int SAMPLES_PER_PIXEL = 277;
+    static final int ROWS_PER_STRIP = 278;
+    static final int STRIP_BYTE_COUNTS = 279;
+    static final int TILE_LENGTH = 323;
+    static final int TILE_OFFSETS = 324;
+    static final int TILE_BYTE_COUNTS = 325;
+    static final int SAMPLE_FORMAT = 339;
+    static final int MODEL_PIXEL_SCALE = 33550;
+    static final int MODEL_TIEPOINT = 33922;
+    static final int MODEL_TRANSFORMATION = 34264;
+    static final int GEO_KEY_DIRECTORY = 34735;
+    static final int GEO_DOUBLE_PARAMS = 34736;
+    static final int GEO_ASCII_PARAMS = 34737;
+    static final int GDAL_NODATA = 42113;
+
+    private final Map<Integer, List<String>> fields;
+
+    private TiffFields(Map<Integer, List<String>> fields) {
+        this.fields = fields;
+    }
+
+    /** Reads the fields of the first IFD of the metadata tree. */
+    static TiffFields of(IIOMetadata metadata) {
+        Map<Integer, List<String>> map = new HashMap<>();
+        Node root = metadata.getAsTree(NATIVE_FORMAT);
+        for (Node ifd = root.getFirstChild(); ifd != null; ifd = ifd.getNextSibling()) {
+            if (!"TIFFIFD".equals(ifd.getNodeName())) {
+                continue;
+            }
+            for (Node field = ifd.getFirstChild(); field != null; field = field.getNextSibling()) {
+                String number = attribute(field, "number");
+                if (number == null) {
+                    continue;
+                }
+                List<String> values = new ArrayList<>();
+                for (Node array = field.getFirstChild(); array != null; array = array.getNextSibling()) {
+                    for (Node v = array.getFirstChild(); v != null; v = v.getNextSibling()) {
+                        String value = attribute(v, "value");
+                        if (value != null) {
+                            values.add(value);
+                        }
+                    }
+                }
+                map.put(Integer.valueOf(number), values);
+            }
+            break;
+        }
+        return new TiffFields(map);
+    }
+
+    private static String attribute(Node node, String name) {
+        NamedNodeMap attributes = node.getAttributes();
+        Node a = attributes != null ? attributes.getNamedItem(name) : null;
+        return a != null ? a.getNodeValue() : null;
+    }
+
+    boolean has(int tag) {
+        return fields.containsKey(tag) && !fields.get(tag).isEmpty();
+    }
+
+    /** The values as longs (rationals "a/b" are not expected in the tags read here). */
+    long[] longs(int tag) {
+        List<String> v = fields.getOrDefault(tag, List.of());
+        long[] out = new long[v.size()];
+        for (int i = 0; i < out.length; i++) {
+            out[i] = Long.parseLong(v.get(i).trim());
+        }
+        return out;
+    }
+
+    /** The first value as an int, or {@code dflt} when the tag is absent. */
+    int intValue(int tag, int dflt) {
+        return has(tag) ? (int) longs(tag)[0] : dflt;
+    }
+
+    double[] doubles(int tag) {
+        List<String> v = fields.getOrDefault(tag, List.of());
+        double[] out = new double[v.size()];
+        for (int i = 0; i < out.length; i++) {
+            out[i] = Double.parseDouble(v.get(i).trim());
+        }
+        return out;
+    }
+
+    /** The ASCII value (several strings joined), or null. */
+    String ascii(int tag) {
+        List<String> v = fields.get(tag);
+        return v == null ? null : String.join("", v);
+    }
+}

@@ -1,0 +1,75 @@
+#!/usr/bin/python3
+"""Builds testdata/formats/ from testdata/dem/ with Debian's GDAL 3.6.2 Python bindings (see README.md).
+
+Run from this folder: /usr/bin/python3 make_formats.py
+"""
+import os
+import subprocess
+
+import numpy as np
+from osgeo import gdal
+
+gdal.UseExceptions()
+VOLCANO = "../dem/maungawhau-volcano_10m_nztm-approx.tif"
+LUX = "../dem/luxembourg_srtm30s_wgs84.tif"
+
+
+def translate(src, dst, *args):
+    subprocess.run(["gdal_translate", "-q", *args, src, dst], check=True)
+
+
+def write_like(src_path, dst, array_bands, gdal_type, options=(), nodata=None, srs=None, geotransform=None):
+    """Writes the given bands with the georeferencing of src_path (or the given one)."""
+    src = gdal.Open(src_path)
+    rows, cols = array_bands[0].shape
+    drv = gdal.GetDriverByName("GTiff")
+    ds = drv.Create(dst, cols, rows, len(array_bands), gdal_type, list(options))
+    ds.SetGeoTransform(geotransform or src.GetGeoTransform())
+    ds.SetProjection(srs if srs is not None else src.GetProjection())
+    for i, a in enumerate(array_bands):
+        b = ds.GetRasterBand(i + 1)
+        b.WriteArray(a)
+        if nodata is not None:
+            b.SetNoDataValue(nodata)
+    ds.FlushCache()
+    ds = None
+
+
+v = gdal.Open(VOLCANO).ReadAsArray().astype(np.int64)  # 87 x 61, 94..195
+
+# Sample types TwelveMonkeys decodes to other Java buffer types.
+write_like(VOLCANO, "volcano_uint8.tif", [v.astype(np.uint8)], gdal.GDT_Byte)
+write_like(VOLCANO, "volcano_int8_minus100.tif", [(v - 100).astype(np.int8)], gdal.GDT_Byte,
+           options=["PIXELTYPE=SIGNEDBYTE"])
+u16 = v.astype(np.uint16) * 300          # 28200..58500: above 32767, so signedness matters
+u16[0, 0] = 65535
+u16[86, 60] = 65535
+write_like(VOLCANO, "volcano_uint16_times300_nodata65535.tif", [u16], gdal.GDT_UInt16, nodata=65535)
+write_like(VOLCANO, "volcano_int32_minus1000.tif", [(v - 1000).astype(np.int32)], gdal.GDT_Int32,
+           options=["COMPRESS=DEFLATE", "PREDICTOR=2"])
+write_like(VOLCANO, "volcano_uint32_times20000000.tif", [v.astype(np.uint32) * 20000000], gdal.GDT_UInt32)
+write_like(VOLCANO, "volcano_float64_times1.5.tif", [v.astype(np.float64) * 1.5], gdal.GDT_Float64,
+           options=["TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16", "COMPRESS=LZW", "PREDICTOR=3"])
+write_like(VOLCANO, "volcano_2bands.tif", [v.astype(np.int16), np.zeros_like(v, dtype=np.int16)],
+           gdal.GDT_Int16)
+write_like(VOLCANO, "volcano_cint16.tif", [v.astype(np.int16)], gdal.GDT_CInt16)
+write_like(VOLCANO, "volcano_rotated.tif", [v.astype(np.int16)], gdal.GDT_Int16,
+           geotransform=(1756944.0, 9.96194698, 0.87155743, 5917994.0, 0.87155743, -9.96194698))
+
+# PixelIsPoint: the same grid, georeferenced on cell centres.
+translate(VOLCANO, "volcano_pixelispoint.tif", "-mo", "AREA_OR_POINT=Point")
+
+# US survey feet: EPSG:2227 (not in Apache SIS's offline EPSG subset) and a user-defined TM in feet.
+translate(VOLCANO, "volcano_epsg2227_ftus.tif", "-a_srs", "EPSG:2227")
+translate(VOLCANO, "volcano_userdefined_tm_ftus.tif", "-a_srs",
+          "+proj=tmerc +lat_0=0 +lon_0=173 +k=0.9996 +x_0=1600000 +y_0=10000000 +ellps=GRS80 +units=us-ft +no_defs")
+
+# Other formats.
+translate(VOLCANO, "volcano.asc", "-of", "AAIGrid")
+translate(LUX, "luxembourg.asc", "-of", "AAIGrid")
+translate(VOLCANO, "volcano.bil", "-of", "EHdr")
+translate(LUX, "luxembourg.bil", "-of", "EHdr")
+
+for f in os.listdir("."):
+    if f.endswith(".aux.xml") or f.endswith(".stx"):
+        os.remove(f)
