@@ -1,0 +1,23 @@
+package io.github.jdem846.cli;
+
+import io.github.jdem846.render.RenderSettings;
+import picocli.CommandLine.Option;
+
+/** {@code --threads} and {@code --tile-size}, shared by the rendering subcommands. */
+public final class ExecutionOptions {
+
+    @Option(names = "--threads", paramLabel = "N",
+            description = "Worker threads (default: all ${sys:jdem846.cpus:-available} processors).")
+    Integer threads;
+
+    @Option(names = "--tile-size", paramLabel = "CELLS",
+            description = "Tile edge in cells (default: ${DEFAULT-VALUE}); the output does not depend on it.",
+            defaultValue = "" + RenderSettings.DEFAULT_TILE_SIZE)
+    int tileSize;
+
+    /** The settings these options describe. */
+    RenderSettings settings() {
+        int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
+        return new RenderSettings(n, tileSize);
+    }
+}

@@ -1,0 +1,223 @@
+package io.github.jdem846.output;
+
+import io.github.jdem846.geo.CrsInfo;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+
+/**
+ * Writes the renderer's products as image files, the format chosen from the file extension ({@link ImageFormat}):
+ * PNG ({@code .png}) or GeoTIFF ({@code .tif}, {@code .tiff}).
+ *
+ * <p>Writing is all or nothing: the image and its sidecars are written to temporary files in the target directory
+ * and renamed into place only when all are complete, the image first; on any failure the temporary files are
+ * deleted and an existing file of the same name is left unchanged. A missing or unwritable directory or a read-only
+ * existing file is reported before any encoding, as an {@link IOException} naming the file.
+ *
+ * <p>Georeferencing ({@link GeoReference}, may be {@code null}) goes into GeoTIFF tags, and into a world file
+ * ({@code .pgw}/{@code .tfw}/{@code .wld}), an ESRI {@code .prj} and a GDAL {@code .aux.xml} (the CRS; GDAL does
+ * not read a {@code .prj} next to a PNG) as {@link WriteOptions#sidecars()} says. When
+ * sidecars are due, a sidecar of an earlier run that would now be wrong (no georeferencing, or no known CRS for the
+ * {@code .prj}) is deleted and a notice says so.
+ *
+ * <p>All methods are thread-safe; the pixel arrays are only read.
+ */
+public final class ImageOutput {
+
+    private ImageOutput() {
+    }
+
+    /**
+     * Writes an 8-bit RGBA image: PNG colour type 6, or a 4-band GeoTIFF with unassociated alpha.
+     *
+     * @param file    the target; {@code .png}, {@code .tif} or {@code .tiff}
+     * @param argb    non-premultiplied ARGB pixels, row-major, {@code width × height}; no-data pixels have alpha 0
+     *                ({@link WriteOptions#noData()} is not used: alpha is the mask)
+     * @param geo     where the image lies on the ground, or {@code null}
+     * @param options how to write
+     * @return the files written and notices for the user
+     * @throws IllegalArgumentException for an unsupported extension or an array that does not match the size
+     * @throws IOException              naming the file when it cannot be written
+     */
+    public static WriteResult writeRgba(Path file, int[] argb, int width, int height, GeoReference geo,
+                                        WriteOptions options) throws IOException {
+        Objects.requireNonNull(argb, "argb");
+        return write(file, new Pixels.Argb(argb, width, height), geo, options, null);
+    }
+
+    /**
+     * Writes an 8-bit single-band image (a hillshade, a shadow mask): PNG colour type 0 or a gray GeoTIFF, whose
+     * GDAL_NODATA tag is {@link WriteOptions#noData()} when given (an integer 0..255; hillshades use 0).
+     *
+     * @param gray samples 0..255 as unsigned bytes, row-major, {@code width × height}
+     * @see #writeRgba for the other parameters
+     */
+    public static WriteResult writeGray(Path file, byte[] gray, int width, int height, GeoReference geo,
+                                        WriteOptions options) throws IOException {
+        Objects.requireNonNull(gray, "gray");
+        Double noData = options.noData();
+        if (noData != null && !(noData >= 0 && noData <= 255 && noData == Math.rint(noData))) {
+            throw new IllegalArgumentException("no-data of an 8-bit image must be an integer 0..255, got " + noData);
+        }
+        return write(file, new Pixels.Gray(gray, width, height), geo, options, noData);
+    }
+
+    /**
+     * Writes a float32 single-band GeoTIFF (numeric products such as a shadow depth or a sky-view factor), with
+     * GDAL_NODATA = {@link WriteOptions#noData()} when given (NaN allowed).
+     *
+     * @param values samples, row-major, {@code width × height}
+     * @throws IllegalArgumentException also when {@code file} is not a {@code .tif}/{@code .tiff}
+     * @see #writeRgba for the other parameters
+     */
+    public static WriteResult writeFloat(Path file, float[] values, int width, int height, GeoReference geo,
+                                         WriteOptions options) throws IOException {
+        Objects.requireNonNull(values, "values");
+        if (ImageFormat.of(file) != ImageFormat.GEOTIFF) {
+            throw new IllegalArgumentException("float32 images can only be written as GeoTIFF (.tif, .tiff), not '"
+                    + file + "'");
+        }
+        return write(file, new Pixels.Float32(values, width, height), geo, options, options.noData());
+    }
+
+    /**
+     * A {@code TYPE_INT_ARGB} image backed by {@code argb} (no copy: changes to one show in the other).
+     *
+     * @param argb non-premultiplied ARGB pixels, row-major, {@code width × height}
+     */
+    public static BufferedImage toBufferedImage(int[] argb, int width, int height) {
+        return Rasters.argbImage(Objects.requireNonNull(argb, "argb"), width, height);
+    }
+
+    /**
+     * A {@code TYPE_BYTE_GRAY} image backed by {@code gray} (no copy). Its raster samples are the bytes; note that
+     * Java treats this type as linear gray, so {@code getRGB} returns gamma-converted colours, not (v, v, v).
+     *
+     * @param gray samples 0..255 as unsigned bytes, row-major, {@code width × height}
+     */
+    public static BufferedImage toBufferedImage(byte[] gray, int width, int height) {
+        return Rasters.grayImage(Objects.requireNonNull(gray, "gray"), width, height);
+    }
+
+    /** The world-file path for {@code image}: {@code out.pgw}, {@code out.tfw} or {@code out.wld}. */
+    public static Path worldFilePath(Path image, WriteOptions.WorldFileNaming naming) {
+        String ext = naming == WriteOptions.WorldFileNaming.WLD ? "wld" : ImageFormat.of(image).worldFileExtension();
+        return sibling(image, ext);
+    }
+
+    /** The {@code .prj} path for {@code image}: {@code out.prj}. */
+    public static Path prjPath(Path image) {
+        ImageFormat.of(image);
+        return sibling(image, "prj");
+    }
+
+    /** The GDAL sidecar path for {@code image}: {@code out.png.aux.xml}. */
+    public static Path auxXmlPath(Path image) {
+        ImageFormat.of(image);
+        return image.resolveSibling(image.getFileName() + ".aux.xml");
+    }
+
+    private static WriteResult write(Path file, Pixels image, GeoReference geo, WriteOptions options,
+                                     Double noData) throws IOException {
+        Objects.requireNonNull(file, "file");
+        Objects.requireNonNull(options, "options");
+        ImageFormat format = ImageFormat.of(file);
+        List<String> notices = new ArrayList<>();
+        boolean sidecarsDue = options.sidecars() == WriteOptions.Sidecars.ALWAYS
+                || (options.sidecars() == WriteOptions.Sidecars.WHEN_NOT_EMBEDDED && format == ImageFormat.PNG);
+        Path worldFile = sidecarsDue ? worldFilePath(file, options.worldFileNaming()) : null;
+        Path prjFile = sidecarsDue ? prjPath(file) : null;
+        Path auxFile = sidecarsDue ? auxXmlPath(file) : null;
+
+        String worldText = null;
+        String prjText = null;
+        String auxText = null;
+        if (sidecarsDue && geo != null) {
+            worldText = WorldFile.of(geo, image.width(), image.height()).toText();
+            EsriPrj.Result prj = EsriPrj.of(geo.crs());
+            if (prj.wkt().isPresent()) {
+                prjText = prj.wkt().get() + "\n";
+                auxText = GdalAuxXml.of(prj.wkt().get(), prj.crs());
+            } else {
+                notices.add(prj.notice());
+            }
+        }
+        if (format == ImageFormat.GEOTIFF && geo != null) {
+            geoTiffNotice(geo.crs()).ifPresent(notices::add);
+        }
+
+        StagedFiles.checkWritable(file);
+        for (Path sidecar : new Path[]{worldText != null ? worldFile : null, prjText != null ? prjFile : null,
+                auxText != null ? auxFile : null}) {
+            if (sidecar != null) {
+                StagedFiles.checkWritable(sidecar);
+            }
+        }
+
+        List<Path> sidecars = new ArrayList<>();
+        try (StagedFiles staged = new StagedFiles()) {
+            staged.stage(file, temp -> encode(format, image, temp, geo, noData, options));
+            if (worldText != null) {
+                staged.stageText(worldFile, worldText);
+                sidecars.add(worldFile);
+            }
+            if (prjText != null) {
+                staged.stageText(prjFile, prjText);
+                staged.stageText(auxFile, auxText);
+                sidecars.add(prjFile);
+                sidecars.add(auxFile);
+            }
+            staged.commit();
+        }
+        if (sidecarsDue) {
+            String reason = geo == null ? "the image has no georeferencing" : "the CRS is not known";
+            if (worldText == null) {
+                removeStale(worldFile, reason, notices);
+            }
+            if (prjText == null) {
+                removeStale(prjFile, reason, notices);
+                removeStale(auxFile, reason, notices);
+            }
+        }
+        return new WriteResult(file, sidecars, notices);
+    }
+
+    private static void encode(ImageFormat format, Pixels image, Path temp, GeoReference geo, Double noData,
+                               WriteOptions options) throws IOException {
+        switch (format) {
+            case PNG -> PngWriter.write(image.image(), temp, options.pngCompressionLevel(), options.parallelPng());
+            case GEOTIFF -> GeoTiffWriter.write(image, temp, geo, noData);
+        }
+    }
+
+    /** What a GeoTIFF reader will miss about {@code crs}, if anything. */
+    private static Optional<String> geoTiffNotice(CrsInfo crs) {
+        if (crs.kind() == CrsInfo.Kind.UNKNOWN) {
+            return Optional.of("the GeoTIFF names no CRS: it is unknown");
+        }
+        if (crs.epsg() == null) {
+            return Optional.of("the GeoTIFF records the CRS" + (crs.name() != null ? " '" + crs.name() + "'" : "")
+                    + " without an EPSG code, so only its " + (crs.isGeographic() ? "ellipsoid" : "linear unit")
+                    + " is known to readers; write sidecars (a .prj) for the full definition");
+        }
+        return Optional.empty();
+    }
+
+    private static void removeStale(Path sidecar, String reason, List<String> notices) throws IOException {
+        if (Files.isRegularFile(sidecar)) {
+            Files.delete(sidecar);
+            notices.add("removed " + sidecar + " from an earlier run: " + reason);
+        }
+    }
+
+    private static Path sibling(Path image, String extension) {
+        String name = image.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return image.resolveSibling(name.substring(0, dot) + "." + extension);
+    }
+}

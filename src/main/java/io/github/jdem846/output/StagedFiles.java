@@ -1,0 +1,190 @@
+package io.github.jdem846.output;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.DosFileAttributes;
+import java.nio.file.attribute.PosixFileAttributes;
+import java.nio.file.attribute.PosixFilePermission;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ThreadLocalRandom;
+
+/**
+ * Writes a group of files so that a failure leaves nothing behind: each file is first written to a hidden
+ * temporary file in its target directory ({@link #stage}); only when all are written does {@link #commit} move them
+ * into place, in the order staged, each by an atomic rename that replaces the old file (or a plain move where the
+ * file system cannot rename atomically). {@link #close} deletes whatever was not committed.
+ *
+ * <p>Temporary files are created with the default permissions of new files (not the owner-only permissions of
+ * {@link Files#createTempFile}), so the final files look like any other file the user writes.
+ */
+final class StagedFiles implements AutoCloseable {
+
+    /** Writes the content of one file. */
+    @FunctionalInterface
+    interface Content {
+        void writeTo(Path file) throws IOException;
+    }
+
+    private record Staged(Path temp, Path target) {
+    }
+
+    private final List<Staged> staged = new ArrayList<>();
+    private int committed;
+
+    /**
+     * Fails early, before any work, when {@code target} cannot be written: its directory is missing, not a
+     * directory or not writable, or the target is a directory or a read-only file.
+     *
+     * @throws IOException naming the file and what is wrong
+     */
+    static void checkWritable(Path target) throws IOException {
+        Path dir = directoryOf(target);
+        if (!Files.exists(dir)) {
+            throw new NoSuchFileException(target.toString(), null,
+                    "cannot write " + target + ": directory " + dir + " does not exist");
+        }
+        if (!Files.isDirectory(dir)) {
+            throw new IOException("cannot write " + target + ": " + dir + " is not a directory");
+        }
+        if (!Files.isWritable(dir)) {
+            throw new AccessDeniedException(target.toString(), null,
+                    "cannot write " + target + ": directory " + dir + " is not writable");
+        }
+        if (Files.isDirectory(target)) {
+            throw new FileAlreadyExistsException(target.toString(), null,
+                    "cannot write " + target + ": a directory of that name exists");
+        }
+        if (Files.exists(target) && isReadOnly(target)) {
+            throw new AccessDeniedException(target.toString(), null,
+                    "cannot write " + target + ": the existing file is read-only and was left unchanged");
+        }
+    }
+
+    /**
+     * True when {@code file} is marked read-only: not writable by this process, or (also for a superuser, whom the
+     * operating system lets write anyway) without the owner's write permission or with the DOS read-only flag.
+     */
+    static boolean isReadOnly(Path file) throws IOException {
+        if (!Files.isWritable(file)) {
+            return true;
+        }
+        try {
+            PosixFileAttributes posix = Files.readAttributes(file, PosixFileAttributes.class);
+            return !posix.permissions().contains(PosixFilePermission.OWNER_WRITE);
+        } catch (UnsupportedOperationException notPosix) {
+            return Files.readAttributes(file, DosFileAttributes.class).isReadOnly();
+        }
+    }
+
+    /**
+     * Writes {@code content} to a new temporary file next to {@code target}.
+     *
+     * @throws IOException naming {@code target} when the temporary file cannot be created or written; the
+     *                     temporary file is then already deleted
+     */
+    void stage(Path target, Content content) throws IOException {
+        checkWritable(target);
+        Path temp = createTemp(target);
+        try {
+            content.writeTo(temp);
+        } catch (IOException | RuntimeException | Error e) {
+            deleteQuietly(temp, e);
+            if (e instanceof IOException io) {
+                throw withTarget(io, target);
+            }
+            throw e;
+        }
+        staged.add(new Staged(temp, target));
+    }
+
+    /** Stages a small text file (UTF-8). */
+    void stageText(Path target, String text) throws IOException {
+        stage(target, file -> Files.writeString(file, text));
+    }
+
+    /**
+     * Moves every staged file onto its target, in the order staged.
+     *
+     * @throws IOException naming the target that could not be replaced (files moved before it stay in place)
+     */
+    void commit() throws IOException {
+        while (committed < staged.size()) {
+            Staged s = staged.get(committed);
+            try {
+                try {
+                    Files.move(s.temp(), s.target(), StandardCopyOption.ATOMIC_MOVE,
+                            StandardCopyOption.REPLACE_EXISTING);
+                } catch (AtomicMoveNotSupportedException e) {
+                    Files.move(s.temp(), s.target(), StandardCopyOption.REPLACE_EXISTING);
+                }
+            } catch (IOException e) {
+                throw withTarget(e, s.target());
+            }
+            committed++;
+        }
+    }
+
+    /** Deletes the temporary files that were not committed. */
+    @Override
+    public void close() {
+        for (int i = committed; i < staged.size(); i++) {
+            deleteQuietly(staged.get(i).temp(), null);
+        }
+        staged.clear();
+        committed = 0;
+    }
+
+    private static Path createTemp(Path target) throws IOException {
+        Path dir = directoryOf(target);
+        String name = target.getFileName().toString();
+        for (int attempt = 0; ; attempt++) {
+            Path temp = dir.resolve("." + name + "." + Long.toHexString(ThreadLocalRandom.current().nextLong())
+                    + ".tmp");
+            try (OutputStream out = Files.newOutputStream(temp, StandardOpenOption.CREATE_NEW,
+                    StandardOpenOption.WRITE)) {
+                return temp;
+            } catch (FileAlreadyExistsException e) {
+                if (attempt > 100) {
+                    throw withTarget(e, target);
+                }
+            } catch (IOException e) {
+                throw withTarget(e, target);
+            }
+        }
+    }
+
+    private static Path directoryOf(Path target) {
+        Path parent = target.toAbsolutePath().getParent();
+        if (parent == null) {
+            throw new IllegalArgumentException("not a file path: " + target);
+        }
+        return parent;
+    }
+
+    private static IOException withTarget(IOException e, Path target) {
+        String message = e.getMessage();
+        if (message != null && message.contains(target.toString())) {
+            return e;
+        }
+        return new IOException("cannot write " + target + ": " + e, e);
+    }
+
+    private static void deleteQuietly(Path temp, Throwable cause) {
+        try {
+            Files.deleteIfExists(temp);
+        } catch (IOException e) {
+            if (cause != null) {
+                cause.addSuppressed(e);
+            }
+        }
+    }
+}

@@ -1,0 +1,103 @@
+package io.github.jdem846.render;
+
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.light.LightField;
+import io.github.jdem846.shade.HillshadeMethod;
+import io.github.jdem846.shade.HillshadeOptions;
+import io.github.jdem846.shadow.ShadowAlgorithm;
+import io.github.jdem846.shadow.ShadowOptions;
+import io.github.jdem846.tint.ColorRamp;
+import java.util.Objects;
+
+/**
+ * What to draw, independent of any particular DEM: the stages and their settings. Immutable; start from
+ * {@link #defaults()} and change what you need with the {@code with…} methods. A stage set to {@code null} (or
+ * {@link ShadowAlgorithm#NONE}) is disabled and costs nothing.
+ *
+ * @param tint             the colour ramp, or {@code null} for a plain mid-gray base (0.5, the original's gray tint)
+ * @param hillshade        the hillshade method, or {@code null} for none (illumination 0 everywhere)
+ * @param hillshadeOptions z-factor, light multiple and the tone (light/dark intensity, spot exponent)
+ * @param shadows          the cast-shadow algorithm, or {@code null}/NONE for none
+ * @param shadowOptions    options of the cast-shadow algorithm
+ * @param light            the light (uniform, or varying over the grid)
+ * @param shadowIntensity  a cell in cast shadow loses 2 × this much brightness (original 0.4)
+ * @param fade             extra darkening in [0, 2] for the whole scene, e.g. the twilight fade (0 in daylight)
+ */
+public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions hillshadeOptions,
+                    ShadowAlgorithm shadows, ShadowOptions shadowOptions, LightField light,
+                    double shadowIntensity, double fade) {
+
+    public Scene {
+        Objects.requireNonNull(hillshadeOptions, "hillshadeOptions");
+        Objects.requireNonNull(shadowOptions, "shadowOptions");
+        Objects.requireNonNull(light, "light");
+        if (!(shadowIntensity >= 0 && shadowIntensity <= 1)) {
+            throw new IllegalArgumentException("shadow intensity must be between 0 and 1 (default 0.4), got "
+                    + shadowIntensity);
+        }
+        if (!(fade >= 0 && fade <= 2)) {
+            throw new IllegalArgumentException("fade must be between 0 and 2, got " + fade);
+        }
+    }
+
+    /**
+     * The original's defaults: the article's hypsometric tint (table 2), jDem846 hillshade with light multiple 0.75
+     * and intensities 0.75/1.0, no cast shadows, sun at azimuth 320° and elevation 25°, shadow intensity 0.4.
+     */
+    public static Scene defaults() {
+        return new Scene(ColorRamp.defaultRamp(), HillshadeMethod.JDEM846, HillshadeOptions.DEFAULTS,
+                ShadowAlgorithm.NONE, ShadowOptions.DEFAULTS, LightField.uniform(LightDirection.ORIGINAL_DEFAULT),
+                Compositor.DEFAULT_SHADOW_INTENSITY, 0);
+    }
+
+    /** The same scene with another tint ({@code null} = plain gray). */
+    public Scene withTint(ColorRamp ramp) {
+        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade);
+    }
+
+    /** The same scene with another hillshade method ({@code null} = none). */
+    public Scene withHillshade(HillshadeMethod method) {
+        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade);
+    }
+
+    /** The same scene with other hillshade options. */
+    public Scene withHillshadeOptions(HillshadeOptions options) {
+        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade);
+    }
+
+    /** The same scene with another cast-shadow algorithm ({@code null} or NONE = none). */
+    public Scene withShadows(ShadowAlgorithm algorithm) {
+        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade);
+    }
+
+    /** The same scene with other cast-shadow options. */
+    public Scene withShadowOptions(ShadowOptions options) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade);
+    }
+
+    /** The same scene under one light direction. */
+    public Scene withLight(LightDirection direction) {
+        return withLight(LightField.uniform(direction));
+    }
+
+    /** The same scene under a light that may vary over the grid. */
+    public Scene withLight(LightField field) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade);
+    }
+
+    /** The same scene with another shadow intensity. */
+    public Scene withShadowIntensity(double intensity) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade);
+    }
+
+    /** The same scene with a global darkening (twilight fade). */
+    public Scene withFade(double darkening) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity,
+                darkening);
+    }
+
+    /** True when cast shadows are to be computed. */
+    public boolean hasShadows() {
+        return shadows != null && shadows != ShadowAlgorithm.NONE;
+    }
+}

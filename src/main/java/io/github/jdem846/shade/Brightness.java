@@ -1,0 +1,60 @@
+package io.github.jdem846.shade;
+
+/**
+ * The article's brightness adjustment (eq. 8) and the original jDem846's two tone steps that precede it. Pure
+ * functions of numbers; NaN in gives NaN out.
+ */
+public final class Brightness {
+
+    private Brightness() {
+    }
+
+    /**
+     * Eq. 8: darkens a colour channel toward 0 for {@code d < 0} ({@code c·(1 + d)}) and lightens it toward 1 for
+     * {@code d ≥ 0} ({@code c + (1 − c)·d}). {@code d} is clamped to [−1, 1] and the result to [0, 1], so a channel
+     * never leaves its range.
+     *
+     * @param channel a colour channel in [0, 1]
+     * @param d       the (toned) illumination in [−1, 1]
+     */
+    public static double adjustBrightness(double channel, double d) {
+        double t = Math.max(-1.0, Math.min(1.0, d));
+        double c = t < 0 ? channel * (1 + t) : channel + (1 - channel) * t;
+        return Math.max(0.0, Math.min(1.0, c));
+    }
+
+    /**
+     * Eq. 8 on each channel of a non-premultiplied ARGB colour (alpha kept), rounding to the nearest 8-bit value as
+     * the original did ({@code Math.round(c·255)}).
+     */
+    public static int adjustBrightness(int argb, double d) {
+        int a = argb >>> 24;
+        int r = adjustChannel((argb >> 16) & 0xFF, d);
+        int g = adjustChannel((argb >> 8) & 0xFF, d);
+        int b = adjustChannel(argb & 0xFF, d);
+        return (a << 24) | (r << 16) | (g << 8) | b;
+    }
+
+    private static int adjustChannel(int c255, double d) {
+        return (int) Math.round(adjustBrightness(c255 / 255.0, d) * 255.0);
+    }
+
+    /**
+     * The original's light/dark intensity step: a positive illumination is multiplied by {@code light}, a negative
+     * one by {@code dark} (defaults 0.75 and 1.0: lit slopes brighten less than shaded ones darken).
+     */
+    public static double intensity(double d, double light, double dark) {
+        return d > 0 ? d * light : d < 0 ? d * dark : d;
+    }
+
+    /**
+     * The spot exponent, sign-preserving: sign(d)·|d|^{@code exponent}. The original's {@code pow(d, spot)} turned
+     * shade into light for even exponents (pow(−0.8, 2) = +0.64); here −0.8 stays dark (−0.64).
+     */
+    public static double spot(double d, double exponent) {
+        if (exponent == 1.0 || d == 0 || Double.isNaN(d)) {
+            return d;
+        }
+        return Math.copySign(Math.pow(Math.abs(d), exponent), d);
+    }
+}

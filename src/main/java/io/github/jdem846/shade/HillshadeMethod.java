@@ -1,0 +1,116 @@
+package io.github.jdem846.shade;
+
+import java.util.Locale;
+import java.util.Objects;
+
+/**
+ * The hillshade methods: jDem846's own (the default) and gdaldem's two. Each makes an {@link IlluminationStage}
+ * from {@link HillshadeOptions} and maps its illumination to the single-band gray byte of the {@code hillshade}
+ * product, where 0 means no-data and 1 … 255 is light.
+ */
+public enum HillshadeMethod {
+
+    /** Article section 3 (eq. 4–8), {@link JDem846Illumination}; gray by eq. 8 on mid-gray. */
+    JDEM846 {
+        @Override
+        public IlluminationStage stage(HillshadeOptions options) {
+            return new JDem846Illumination(options);
+        }
+
+        /**
+         * Eq. 8 applied to mid-gray 0.5 after the jDem846 tone ({@link HillshadeOptions#tone}): 0.5·(1 + t) for
+         * either sign of t, stretched onto 1 … 255, i.e. 1 + round(127·(1 + t)). t = −1 → 1, 0 → 128, 1 → 255.
+         */
+        @Override
+        public int gray(float illumination, HillshadeOptions options) {
+            if (Float.isNaN(illumination)) {
+                return 0;
+            }
+            double channel = Brightness.adjustBrightness(0.5, options.tone(illumination));
+            return 1 + (int) Math.rint(254.0 * channel);
+        }
+    },
+
+    /** gdaldem's default (Horn) hillshade, {@link HornIllumination}; gray = gdaldem's bytes. */
+    HORN {
+        @Override
+        public IlluminationStage stage(HillshadeOptions options) {
+            return new HornIllumination(options);
+        }
+
+        /**
+         * gdaldem: 1 + 254·cos i, or 1 where cos i ≤ 0, stored as float32 and rounded to the nearest byte (ties to
+         * even, as GDAL's SSE float → byte conversion does).
+         */
+        @Override
+        public int gray(float illumination, HillshadeOptions options) {
+            if (Float.isNaN(illumination)) {
+                return 0;
+            }
+            double cang254 = 254.0 * illumination;
+            return toByte(cang254 <= 0 ? 1.0 : 1.0 + cang254);
+        }
+    },
+
+    /** gdaldem's {@code -multidirectional} hillshade, {@link MultidirectionalIllumination}; gray = gdaldem's bytes. */
+    MULTIDIRECTIONAL {
+        @Override
+        public IlluminationStage stage(HillshadeOptions options) {
+            return new MultidirectionalIllumination(options);
+        }
+
+        /**
+         * gdaldem: 1 + 254·value rounded to the nearest byte. Deviation: clamped at 1, where gdaldem writes 0
+         * (its no-data) for flat cells under a light more than 0.11° below the horizon.
+         */
+        @Override
+        public int gray(float illumination, HillshadeOptions options) {
+            if (Float.isNaN(illumination)) {
+                return 0;
+            }
+            return Math.max(1, toByte(1.0 + 254.0 * illumination));
+        }
+    };
+
+    /** The illumination stage of this method with the given options. */
+    public abstract IlluminationStage stage(HillshadeOptions options);
+
+    /** The gray byte (0 = no-data, 1 … 255) of one cell's illumination, as an int. */
+    public abstract int gray(float illumination, HillshadeOptions options);
+
+    /**
+     * The gray bytes of a whole illumination array (as written by this method's stage), 0 = no-data. Read a byte as
+     * unsigned: {@code out[i] & 0xFF}.
+     */
+    public byte[] toGray(float[] illumination, HillshadeOptions options) {
+        Objects.requireNonNull(illumination, "illumination");
+        Objects.requireNonNull(options, "options");
+        byte[] out = new byte[illumination.length];
+        for (int i = 0; i < out.length; i++) {
+            out[i] = (byte) gray(illumination[i], options);
+        }
+        return out;
+    }
+
+    /** The command-line name: {@code jdem846}, {@code horn}, {@code multidirectional}. */
+    public String cliName() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    /** The method named {@code name} (case-insensitive), with a message listing the choices otherwise. */
+    public static HillshadeMethod fromName(String name) {
+        for (HillshadeMethod m : values()) {
+            if (m.cliName().equalsIgnoreCase(name == null ? "" : name.trim())) {
+                return m;
+            }
+        }
+        throw new IllegalArgumentException("unknown hillshade method '" + name
+                + "'; choose jdem846 (default), horn or multidirectional");
+    }
+
+    /** GDAL's float → byte store: the value as float32, clamped to 0 … 255, rounded to nearest (ties to even). */
+    static int toByte(double value) {
+        float f = (float) value;
+        return (int) Math.rint(Math.max(0f, Math.min(255f, f)));
+    }
+}

@@ -1,0 +1,67 @@
+package io.github.jdem846.shade;
+
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.raster.Dem;
+import java.util.Objects;
+
+/**
+ * gdaldem's default hillshade ({@code gdaldem hillshade -compute_edges}, GDAL 3.6 {@code GDALHillshadeAlg}): Horn's
+ * (1981) 3×3 gradient and the cosine of incidence on the plane it defines.
+ *
+ * <p>With the window of {@link GdalWindow} (0 = NW … 8 = SE), Δx, Δy the cell sizes in metres and z the z-factor:
+ * <pre>
+ *   ∂z/∂east  = z · ((w2 + 2w5 + w8) − (w0 + 2w3 + w6)) / (8Δx)
+ *   ∂z/∂north = z · ((w0 + 2w1 + w2) − (w6 + 2w7 + w8)) / (8Δy)
+ *   cos i     = (sin alt − cos alt · (∂z/∂east · sin az + ∂z/∂north · cos az)) / √(1 + (∂z/∂east)² + (∂z/∂north)²)
+ * </pre>
+ * which is the dot product of the unit normal (−∂z/∂east, −∂z/∂north, 1)/‖·‖ with the light (east, north, up) of
+ * {@link LightDirection}. It is computed multiplied through by Δx·Δy, so a cell of zero width (a pole) gives a
+ * vertical face instead of an infinity, and a window without extent or relief gives sin alt. The light is used as
+ * given, also at or below the horizon, as gdaldem does. gdaldem's bytes are {@link HillshadeMethod#gray}.
+ * Deviation: gdaldem approximates 1/√ with an SSE estimate plus one Newton step (relative error ≈ 1e−7); this uses
+ * an exact square root.
+ */
+public final class HornIllumination implements IlluminationStage {
+
+    private final HillshadeOptions options;
+
+    public HornIllumination(HillshadeOptions options) {
+        this.options = Objects.requireNonNull(options, "options");
+    }
+
+    public HillshadeOptions options() {
+        return options;
+    }
+
+    @Override
+    public void illuminate(Dem dem, LightDirection light, int col0, int row0, int w, int h, float[] out) {
+        StageArguments.check(dem, light, col0, row0, w, h, out);
+        final double le = light.east();
+        final double ln = light.north();
+        final double lu = light.up();
+        final double zf = options.zFactor() / 8.0;
+        final CellSpacing spacing = new CellSpacing(dem.geometry(), options);
+        final float[] v = dem.backingArray();
+        final double[] win = new double[9];
+        for (int r = row0; r < row0 + h; r++) {
+            final double dx = spacing.eastWest(r);
+            final double dy = spacing.northSouth(r);
+            final double area = dx * dy;
+            int o = (r - row0) * w;
+            for (int c = col0; c < col0 + w; c++, o++) {
+                if (!GdalWindow.fill(v, dem.width(), dem.height(), c, r, win)) {
+                    out[o] = Float.NaN;
+                    continue;
+                }
+                final double gx = (win[2] + 2 * win[5] + win[8]) - (win[0] + 2 * win[3] + win[6]);
+                final double gy = (win[0] + 2 * win[1] + win[2]) - (win[6] + 2 * win[7] + win[8]);
+                // The normal (−∂z/∂east, −∂z/∂north, 1) multiplied by Δx·Δy.
+                final double nx = -zf * gx * dy;
+                final double ny = -zf * gy * dx;
+                final double len = Math.sqrt(nx * nx + ny * ny + area * area);
+                final double cos = len > 0 ? (nx * le + ny * ln + area * lu) / len : lu;
+                out[o] = (float) Math.max(-1.0, Math.min(1.0, cos));
+            }
+        }
+    }
+}

@@ -1,0 +1,139 @@
+package io.github.jdem846.shade;
+
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.raster.Dem;
+import java.util.Objects;
+
+/**
+ * The jDem846 hillshade (article section 3, eq. 4–7): the cosine of the angle between each cell's vertex normal
+ * and the light.
+ *
+ * <p>Frame: x = east, y = north, z = up (right-handed), metres. The centre cell C sits at the origin; its
+ * 4-neighbours are E = (Δx, 0, z<sub>E</sub>), W = (−Δx, 0, z<sub>W</sub>), N = (0, Δy, z<sub>N</sub>),
+ * S = (0, −Δy, z<sub>S</sub>), heights relative to C and multiplied by z-factor × light multiple, Δx and Δy the
+ * row's metric cell width and height ({@link CellSpacing}). (The original used x = east, y = up, z = south; the
+ * same right-handed geometry with other axis names.)
+ * <ol>
+ *   <li>eq. 5 (with eq. 12, 14, 16): a unit normal for each of the four triangles (W, C, N), (W, S, C), (C, S, E),
+ *       (N, C, E): A = P0 − P1, B = P1 − P2, N = normalise(A × B), where a zero vector stays zero (L = 0 → 1);</li>
+ *   <li>eq. 6: their mean;</li>
+ *   <li>eq. 7: the dot product of the <em>normalised</em> mean with the unit light vector ({@link LightDirection},
+ *       eq. 4). The original divided the sum by 4 and did not renormalise, so the value shrank on rough ground and
+ *       was not a cosine; eq. 7 itself normalises both inputs, and renormalising makes a plane of any slope give
+ *       exactly its analytic cosine of incidence. A mean of length 0 (only on a degenerate cell of zero width with
+ *       no relief) is taken as straight up.</li>
+ * </ol>
+ *
+ * <p>Missing neighbours, whether outside the grid or no-data, are never used as numbers. Each is extrapolated
+ * linearly through the centre from the opposite neighbour (z<sub>W</sub> = 2z<sub>C</sub> − z<sub>E</sub>, as
+ * gdaldem {@code -compute_edges} does at the grid edge); if the opposite neighbour is missing too, the axis has no
+ * slope information and gets zero slope (z<sub>W</sub> = z<sub>E</sub> = z<sub>C</sub>). On a plane this
+ * reproduces the plane exactly, so neither the grid edge nor a hole makes a ring. No-data cells give NaN.
+ *
+ * <p>Light at or below the horizon ({@link LightDirection#isBelowHorizon()}): there is no direct light, so the
+ * result is min(cosine, 0): nothing is lit, flat ground gets sin(elevation) ≤ 0 and slopes facing away from the
+ * light darken as usual.
+ */
+public final class JDem846Illumination implements IlluminationStage {
+
+    private final HillshadeOptions options;
+
+    public JDem846Illumination(HillshadeOptions options) {
+        this.options = Objects.requireNonNull(options, "options");
+    }
+
+    public HillshadeOptions options() {
+        return options;
+    }
+
+    @Override
+    public void illuminate(Dem dem, LightDirection light, int col0, int row0, int w, int h, float[] out) {
+        StageArguments.check(dem, light, col0, row0, w, h, out);
+        final double le = light.east();
+        final double ln = light.north();
+        final double lu = light.up();
+        final boolean belowHorizon = light.isBelowHorizon();
+        final double k = options.zFactor() * options.lightMultiple();
+        final CellSpacing spacing = new CellSpacing(dem.geometry(), options);
+        final float[] v = dem.backingArray();
+        final int width = dem.width();
+        final int height = dem.height();
+        final double[] normal = new double[3];
+        for (int r = row0; r < row0 + h; r++) {
+            final double dx = spacing.eastWest(r);
+            final double dy = spacing.northSouth(r);
+            final int rowStart = r * width;
+            int o = (r - row0) * w;
+            for (int c = col0; c < col0 + w; c++, o++) {
+                final float zc = v[rowStart + c];
+                if (Float.isNaN(zc)) {
+                    out[o] = Float.NaN;
+                    continue;
+                }
+                // Heights relative to the centre, in double (float32 extremes cannot overflow); NaN = missing.
+                double e = c + 1 < width ? (double) v[rowStart + c + 1] - zc : Double.NaN;
+                double wv = c > 0 ? (double) v[rowStart + c - 1] - zc : Double.NaN;
+                double n = r > 0 ? (double) v[rowStart - width + c] - zc : Double.NaN;
+                double s = r + 1 < height ? (double) v[rowStart + width + c] - zc : Double.NaN;
+                // Extrapolate a missing neighbour through the centre; zero slope when both are missing.
+                final double eFilled = !Double.isNaN(e) ? e : !Double.isNaN(wv) ? -wv : 0.0;
+                final double wFilled = !Double.isNaN(wv) ? wv : !Double.isNaN(e) ? -e : 0.0;
+                final double nFilled = !Double.isNaN(n) ? n : !Double.isNaN(s) ? -s : 0.0;
+                final double sFilled = !Double.isNaN(s) ? s : !Double.isNaN(n) ? -n : 0.0;
+                vertexNormal(dx, dy, eFilled * k, wFilled * k, nFilled * k, sFilled * k, normal);
+                double d = normal[0] * le + normal[1] * ln + normal[2] * lu; // eq. 7
+                if (belowHorizon && d > 0) {
+                    d = 0.0;
+                }
+                out[o] = (float) Math.max(-1.0, Math.min(1.0, d));
+            }
+        }
+    }
+
+    /**
+     * The unit vertex normal of a cell from its four neighbours (eq. 5, 6 and the normalisation of eq. 7): C at the
+     * origin, E = (dx, 0, zE), W = (−dx, 0, zW), N = (0, dy, zN), S = (0, −dy, zS). Writes (east, north, up) into
+     * {@code normal}.
+     */
+    static void vertexNormal(double dx, double dy, double zE, double zW, double zN, double zS, double[] normal) {
+        normal[0] = 0;
+        normal[1] = 0;
+        normal[2] = 0;
+        // The four triangles around C, each counter-clockwise seen from above so that its normal points up.
+        addTriangleNormal(-dx, 0, zW, 0, 0, 0, 0, dy, zN, normal);   // (W, C, N)
+        addTriangleNormal(-dx, 0, zW, 0, -dy, zS, 0, 0, 0, normal);  // (W, S, C)
+        addTriangleNormal(0, 0, 0, 0, -dy, zS, dx, 0, zE, normal);   // (C, S, E)
+        addTriangleNormal(0, dy, zN, 0, 0, 0, dx, 0, zE, normal);    // (N, C, E)
+        // eq. 6 divides the sum by 4; the direction is the same, and eq. 7 normalises it.
+        double len = Math.sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+        if (len > 0) {
+            normal[0] /= len;
+            normal[1] /= len;
+            normal[2] /= len;
+        } else {
+            normal[0] = 0;
+            normal[1] = 0;
+            normal[2] = 1; // no extent, no relief: flat
+        }
+    }
+
+    /** Adds the unit normal of triangle (P0, P1, P2) to {@code acc} (eq. 5 / 15 with eq. 12, 14 and 16). */
+    private static void addTriangleNormal(double x0, double y0, double z0, double x1, double y1, double z1,
+                                          double x2, double y2, double z2, double[] acc) {
+        double ax = x0 - x1;
+        double ay = y0 - y1;
+        double az = z0 - z1;
+        double bx = x1 - x2;
+        double by = y1 - y2;
+        double bz = z1 - z2;
+        double cx = ay * bz - by * az; // eq. 12
+        double cy = az * bx - bz * ax;
+        double cz = ax * by - bx * ay;
+        double len = Math.sqrt(cx * cx + cy * cy + cz * cz); // eq. 14: L = 0 → 1
+        if (len > 0) {
+            acc[0] += cx / len; // eq. 16
+            acc[1] += cy / len;
+            acc[2] += cz / len;
+        }
+    }
+}

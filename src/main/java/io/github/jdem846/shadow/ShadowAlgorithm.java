@@ -1,0 +1,129 @@
+package io.github.jdem846.shadow;
+
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.raster.Dem;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Objects;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.RecursiveAction;
+
+/**
+ * The cast-shadow methods ({@code --algorithm}). All give the same kind of {@link ShadowMask}; the scene decides
+ * what is computed at all: a sun at or below the horizon shades every valid cell without tracing, a sun at the
+ * zenith casts no shadow, an all-no-data DEM gives an empty mask.
+ */
+public enum ShadowAlgorithm {
+
+    /**
+     * The article's ray march (section 4.2, eq. 9–11, tests 1–4): one ray per cell, by default with the article's
+     * step (eq. 9) and nearest-cell sampling; {@link ShadowOptions#step()} and {@link ShadowOptions#sampling()}
+     * change both. Cost grows with the ray length, i.e. as the sun gets lower.
+     */
+    MARCH,
+    /** The same shadow test in O(cells) by sun-parallel lines (see docs/shadows.md); bilinear by default. */
+    SWEEP,
+    /** The reference: a march with eighth-cell steps on the bilinear surface. Slow by design. */
+    EXACT,
+    /** No cast shadows: every cell lit. */
+    NONE;
+
+    /** The CLI name: march, sweep, exact, none. */
+    public String cliName() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    /** The algorithm named {@code name} (case-insensitive). */
+    public static ShadowAlgorithm parse(String name) {
+        for (ShadowAlgorithm a : values()) {
+            if (a.cliName().equalsIgnoreCase(name == null ? "" : name.trim())) {
+                return a;
+            }
+        }
+        throw new IllegalArgumentException("unknown shadow algorithm '" + name
+                + "'; expected one of march, sweep, exact, none");
+    }
+
+    /** Shadows of the whole DEM on the common ForkJoinPool. */
+    public ShadowMask compute(Dem dem, LightDirection light, ShadowOptions options) {
+        return compute(dem, light, options, ForkJoinPool.commonPool());
+    }
+
+    /** Shadows of the whole DEM, the work split across {@code pool}. */
+    public ShadowMask compute(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool) {
+        return computeWindow(dem, light, options, pool, CellWindow.whole(dem.width(), dem.height()));
+    }
+
+    /**
+     * Shadows of the cells of {@code window} only (a mask of the window's size), reading the DEM only inside
+     * {@link ShadowHalo#window(Dem, LightDirection, ShadowOptions, CellWindow)}. Hard-shadow results are identical
+     * to the same cells of a whole-DEM computation, for any window and any pool.
+     */
+    public ShadowMask computeWindow(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
+                                    CellWindow window) {
+        Objects.requireNonNull(dem, "dem");
+        Objects.requireNonNull(light, "light");
+        Objects.requireNonNull(options, "options");
+        Objects.requireNonNull(pool, "pool");
+        Objects.requireNonNull(window, "window");
+        if (!window.isInside(dem.width(), dem.height())) {
+            throw new IllegalArgumentException("window " + window + " is not inside the " + dem.width() + "×"
+                    + dem.height() + " DEM");
+        }
+        int ww = window.width();
+        int wh = window.height();
+        if (this == NONE || dem.statistics().isEmpty() || light.isAtZenith()) {
+            return ShadowMask.filled(ww, wh, 0f);
+        }
+        float[] out = new float[ww * wh];
+        if (light.isBelowHorizon()) {
+            float[] v = dem.backingArray();
+            for (int r = 0; r < wh; r++) {
+                for (int c = 0; c < ww; c++) {
+                    float z = v[(window.row() + r) * dem.width() + window.col() + c];
+                    out[r * ww + c] = z == z ? 1f : 0f;
+                }
+            }
+            return new ShadowMask(ww, wh, out);
+        }
+        RayFrame frame = new RayFrame(dem, light, options);
+        switch (this) {
+            case SWEEP -> {
+                boolean bilinear = options.sampling() != Sampling.NEAREST;
+                int halo = ShadowHalo.steps(frame, ShadowHalo.tileMin(dem, window), light, options);
+                new SunSweep(dem, frame, bilinear, options.firstCellTest()).run(window, halo, out, pool);
+            }
+            case MARCH -> march(new RayMarcher(dem, frame, options.step(),
+                    options.sampling() == Sampling.BILINEAR), window, out, pool);
+            case EXACT -> march(new RayMarcher(dem, frame, StepSize.EIGHTH_CELL, true), window, out, pool);
+            default -> throw new AssertionError(this);
+        }
+        return new ShadowMask(ww, wh, out);
+    }
+
+    private static void march(RayMarcher marcher, CellWindow win, float[] out, ForkJoinPool pool) {
+        List<RecursiveAction> tasks = new ArrayList<>();
+        int rowsPerTask = Math.max(1, Math.min(16, win.height() / 64));
+        for (int r = 0; r < win.height(); r += rowsPerTask) {
+            int from = r;
+            int to = Math.min(win.height(), r + rowsPerTask);
+            tasks.add(new RecursiveAction() {
+                @Override
+                protected void compute() {
+                    for (int rr = from; rr < to; rr++) {
+                        for (int c = 0; c < win.width(); c++) {
+                            out[rr * win.width() + c] = marcher.shade(win.col() + c, win.row() + rr);
+                        }
+                    }
+                }
+            });
+        }
+        pool.invoke(new RecursiveAction() {
+            @Override
+            protected void compute() {
+                invokeAll(tasks);
+            }
+        });
+    }
+}

@@ -1,0 +1,87 @@
+package io.github.jdem846.shadow;
+
+import java.util.Objects;
+
+/**
+ * Settings of a shadow computation. {@link #DEFAULTS} gives hard shadows, the article's step and sampling for
+ * {@code march}, bilinear sampling for {@code sweep}, no Earth curvature.
+ *
+ * @param step                  ray step of {@code march} ({@link StepSize#ARTICLE} = eq. 9); ignored by the others
+ * @param sampling              terrain sampling; {@link Sampling#AUTO} = nearest for {@code march}, bilinear for
+ *                              {@code sweep}; {@code exact} is always bilinear
+ * @param firstCellTest         {@code sweep} only: test the first cell of each ray on the bilinear surface in
+ *                              eighth-cell steps, as {@code exact} does (true by default; false only for the
+ *                              accuracy study)
+ * @param softShadows           shadowed fraction of the sun's disk instead of 0/1
+ * @param sunDiameterDegrees    apparent diameter of the sun's disk for soft shadows, 0.53° by default
+ * @param earthCurvature        lower distant terrain by (1 − k)·d²/(2R) (curvature less refraction)
+ * @param refractionCoefficient k, 0.13 by default
+ * @param earthRadiusMeters     R; NaN = the mean radius of the grid's ellipsoid
+ */
+public record ShadowOptions(StepSize step, Sampling sampling, boolean firstCellTest, boolean softShadows,
+                            double sunDiameterDegrees, boolean earthCurvature, double refractionCoefficient,
+                            double earthRadiusMeters) {
+
+    /** Apparent diameter of the sun, degrees. */
+    public static final double SUN_DIAMETER_DEGREES = 0.53;
+    /** The usual terrestrial refraction coefficient. */
+    public static final double REFRACTION_COEFFICIENT = 0.13;
+
+    /** Hard shadows, article step, automatic sampling, first-cell test on, no curvature. */
+    public static final ShadowOptions DEFAULTS = new ShadowOptions(StepSize.ARTICLE, Sampling.AUTO, true, false,
+            SUN_DIAMETER_DEGREES, false, REFRACTION_COEFFICIENT, Double.NaN);
+
+    public ShadowOptions {
+        Objects.requireNonNull(step, "step");
+        Objects.requireNonNull(sampling, "sampling");
+        if (!(sunDiameterDegrees >= 0 && sunDiameterDegrees <= 10)) {
+            throw new IllegalArgumentException("sun diameter must be between 0 and 10 degrees, got "
+                    + sunDiameterDegrees);
+        }
+        if (!(refractionCoefficient >= -1 && refractionCoefficient <= 1)) {
+            throw new IllegalArgumentException("refraction coefficient must be between -1 and 1 (0.13 is usual),"
+                    + " got " + refractionCoefficient);
+        }
+        if (!Double.isNaN(earthRadiusMeters) && !(earthRadiusMeters > 0 && earthRadiusMeters < 1e12)) {
+            throw new IllegalArgumentException("planet radius must be a positive number of metres (or unset to use"
+                    + " the grid's ellipsoid), got " + earthRadiusMeters);
+        }
+    }
+
+    public ShadowOptions withStep(StepSize s) {
+        return new ShadowOptions(s, sampling, firstCellTest, softShadows, sunDiameterDegrees, earthCurvature,
+                refractionCoefficient, earthRadiusMeters);
+    }
+
+    public ShadowOptions withSampling(Sampling s) {
+        return new ShadowOptions(step, s, firstCellTest, softShadows, sunDiameterDegrees, earthCurvature,
+                refractionCoefficient, earthRadiusMeters);
+    }
+
+    public ShadowOptions withFirstCellTest(boolean on) {
+        return new ShadowOptions(step, sampling, on, softShadows, sunDiameterDegrees, earthCurvature,
+                refractionCoefficient, earthRadiusMeters);
+    }
+
+    /** Soft shadows from a sun disk of {@link #sunDiameterDegrees()}. */
+    public ShadowOptions withSoftShadows(boolean on) {
+        return new ShadowOptions(step, sampling, firstCellTest, on, sunDiameterDegrees, earthCurvature,
+                refractionCoefficient, earthRadiusMeters);
+    }
+
+    public ShadowOptions withSunDiameter(double degrees) {
+        return new ShadowOptions(step, sampling, firstCellTest, softShadows, degrees, earthCurvature,
+                refractionCoefficient, earthRadiusMeters);
+    }
+
+    /** Curvature and refraction on or off, with the given k and radius (NaN = the grid's ellipsoid). */
+    public ShadowOptions withEarthCurvature(boolean on, double k, double radiusMeters) {
+        return new ShadowOptions(step, sampling, firstCellTest, softShadows, sunDiameterDegrees, on, k,
+                radiusMeters);
+    }
+
+    /** Curvature and refraction on or off with k = 0.13 and the grid's ellipsoid. */
+    public ShadowOptions withEarthCurvature(boolean on) {
+        return withEarthCurvature(on, REFRACTION_COEFFICIENT, Double.NaN);
+    }
+}

@@ -1,0 +1,489 @@
+package io.github.jdem846.shadow;
+
+import io.github.jdem846.raster.Dem;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.RecursiveAction;
+
+/**
+ * The shadow test of the ray march in O(cells): straight lines parallel to the sun direction, one cell apart across
+ * it, are walked from the sun's side, each carrying the running shadow height max(z_upstream − d·tan(elevation)) of
+ * its own samples (the DEM read bilinearly, or nearest, at exact positions on the line: shadow heights are never
+ * re-interpolated from line to line, so nothing smears sideways). A cell lies between two adjacent lines; its shadow
+ * height from two cells upstream on is interpolated between theirs, and the first cell of its own ray is tested
+ * directly on the bilinear surface in eighth-cell steps, as {@code exact} does, where a steep slope shades itself.
+ *
+ * <p>Work: one sample per line per column plus a constant per cell, whatever the sun elevation. Lines are split
+ * into chunks across a ForkJoinPool; every line is computed the same way in any chunk, so the mask does not depend
+ * on the thread count.
+ *
+ * <p>Frame: major index i runs along the sun's major grid axis with i increasing toward the sun; minor index j
+ * across it, oriented so that the line slope m = dj/di is in [0, 1]. Line k is j = k + m·i.
+ */
+final class SunSweep {
+
+    private static final int LINES_PER_TASK = 48;
+    private static final int SUB_STEPS = 8;
+
+    private final float[] v;
+    private final RayFrame f;
+    private final boolean bilinear;
+    private final boolean firstCellTest;
+    private final int nMaj;
+    private final int nMin;
+    private final int c0;
+    private final int ci;
+    private final int cj;
+    private final int r0;
+    private final int ri;
+    private final int rj;
+    private final int gridW;
+    private final double m;
+    private final int[] pf;
+    private final double[] pr;
+    /** Flat index of frame cell (i, 0), and the index stride of one minor step. */
+    private final int[] baseI;
+    private final int strideJ;
+    /** Metres of one major step when it is the same on every row (projected grids), else NaN. */
+    private final double uniformStep;
+
+    SunSweep(Dem dem, RayFrame frame, boolean bilinear, boolean firstCellTest) {
+        this.v = dem.backingArray();
+        this.f = frame;
+        this.bilinear = bilinear;
+        this.firstCellTest = firstCellTest;
+        int w = dem.width();
+        int h = dem.height();
+        this.gridW = w;
+        if (frame.xMajor) {
+            nMaj = w;
+            nMin = h;
+            ci = frame.ux > 0 ? 1 : -1;
+            c0 = ci > 0 ? 0 : w - 1;
+            cj = 0;
+            ri = 0;
+            rj = frame.uy >= 0 ? 1 : -1;
+            r0 = rj > 0 ? 0 : h - 1;
+            m = Math.abs(frame.uy);
+        } else {
+            nMaj = h;
+            nMin = w;
+            ri = frame.uy > 0 ? 1 : -1;
+            r0 = ri > 0 ? 0 : h - 1;
+            rj = 0;
+            ci = 0;
+            cj = frame.ux >= 0 ? 1 : -1;
+            c0 = cj > 0 ? 0 : w - 1;
+            m = Math.abs(frame.ux);
+        }
+        pf = new int[nMaj];
+        pr = new double[nMaj];
+        for (int i = 0; i < nMaj; i++) {
+            double p = m * i;
+            double fl = Math.floor(p);
+            pf[i] = (int) fl;
+            pr[i] = p - fl;
+        }
+        baseI = new int[nMaj];
+        for (int i = 0; i < nMaj; i++) {
+            baseI[i] = (r0 + ri * i) * w + c0 + ci * i;
+        }
+        strideJ = rj * w + cj;
+        double first = frame.metresPerStep[0];
+        boolean same = true;
+        for (double d : frame.metresPerStep) {
+            same &= d == first;
+        }
+        uniformStep = same ? first : Double.NaN;
+    }
+
+    private int idx(int i, int j) {
+        return baseI[i] + strideJ * j;
+    }
+
+    private int rowOf(int i, int j) {
+        return r0 + ri * i + rj * j;
+    }
+
+    private int frameI(int col, int row) {
+        return f.xMajor ? (col - c0) * ci : (row - r0) * ri;
+    }
+
+    private int frameJ(int col, int row) {
+        return f.xMajor ? (row - r0) * rj : (col - c0) * cj;
+    }
+
+    /**
+     * Computes the shadow of the cells of {@code win} into {@code out} (row-major, row length win.width()), reading
+     * terrain up to {@code haloSteps} major steps upstream of the window (Integer.MAX_VALUE = the whole grid).
+     */
+    void run(CellWindow win, int haloSteps, float[] out, ForkJoinPool pool) {
+        int ia = frameI(win.col(), win.row());
+        int ib = frameI(win.colEnd() - 1, win.rowEnd() - 1);
+        int ja = frameJ(win.col(), win.row());
+        int jb = frameJ(win.colEnd() - 1, win.rowEnd() - 1);
+        int wi0 = Math.min(ia, ib);
+        int wi1 = Math.max(ia, ib);
+        int wj0 = Math.min(ja, jb);
+        int wj1 = Math.max(ja, jb);
+        int iTop = (int) Math.min(nMaj - 1L, (long) wi1 + haloSteps);
+        int kMin = wj0 - pf[wi1] - 1;
+        int kMax = wj1 - pf[wi0];
+        Window w = new Window(win, wi0, wi1, wj0, wj1, iTop, out);
+        List<RecursiveAction> tasks = new ArrayList<>();
+        for (int k = kMin; k <= kMax; k += LINES_PER_TASK) {
+            int from = k;
+            int to = Math.min(kMax, k + LINES_PER_TASK - 1);
+            tasks.add(new RecursiveAction() {
+                @Override
+                protected void compute() {
+                    bands(w, from, to);
+                }
+            });
+        }
+        pool.invoke(new RecursiveAction() {
+            @Override
+            protected void compute() {
+                invokeAll(tasks);
+            }
+        });
+    }
+
+    private record Window(CellWindow win, int wi0, int wi1, int wj0, int wj1, int iTop, float[] out) {
+    }
+
+    /** Per-task scratch: the shadow height and occluder distance of one line at each window column. */
+    private final class Line {
+        final double[] height;
+        final double[] occluder;
+        final double[] pos;
+        final double[] hullA;
+        final double[] hullB;
+        final double[] hullP;
+
+        Line(int windowCols, int walkLen) {
+            height = new double[windowCols];
+            occluder = new double[windowCols];
+            pos = new double[walkLen + 3];
+            hullA = new double[walkLen + 3];
+            hullB = new double[walkLen + 3];
+            hullP = new double[walkLen + 3];
+        }
+    }
+
+    private void bands(Window w, int kFrom, int kTo) {
+        int cols = w.wi1 - w.wi0 + 1;
+        int walk = w.iTop - w.wi0 + 1;
+        Line a = new Line(cols, walk);
+        Line b = new Line(cols, walk);
+        walkLine(w, kFrom, a);
+        for (int k = kFrom; k <= kTo; k++) {
+            walkLine(w, k + 1, b);
+            band(w, k, a, b);
+            Line t = a;
+            a = b;
+            b = t;
+        }
+    }
+
+    /** The terrain on line k at major index i (NaN = no-data or off the grid). */
+    private double lineSample(int k, int i) {
+        int jj = k + pf[i];
+        double fr = pr[i];
+        if (bilinear) {
+            if (jj >= 0 && jj < nMin - 1) {
+                int at = baseI[i] + strideJ * jj;
+                double za = v[at];
+                if (fr == 0) {
+                    return za;
+                }
+                double zb = v[at + strideJ];
+                if (za == za && zb == zb) {
+                    return za + (zb - za) * fr;
+                }
+                return za == za ? za : zb;
+            }
+            if (jj < -1 || jj > nMin - 1 || (jj == -1 && fr == 0)) {
+                return Double.NaN;
+            }
+            if (fr == 0) {
+                return v[idx(i, jj)];
+            }
+            int ja = Math.max(jj, 0);
+            int jb = Math.min(jj + 1, nMin - 1);
+            double za = v[idx(i, ja)];
+            double zb = v[idx(i, jb)];
+            if (za == za && zb == zb) {
+                return za + (zb - za) * fr;
+            }
+            return za == za ? za : zb;
+        }
+        double pos = jj + fr;
+        if (pos < -0.5 || pos > nMin - 0.5) {
+            return Double.NaN;
+        }
+        int jn = (int) Math.floor(pos + 0.5);
+        jn = Math.max(0, Math.min(nMin - 1, jn));
+        return v[idx(i, jn)];
+    }
+
+    /**
+     * Walks line k from iTop down to the window, storing for each window column i the shadow height at i from the
+     * line's samples at i + 2 and beyond ({@code −∞} when none), and the distance to the sample that sets it.
+     */
+    private void walkLine(Window w, int k, Line line) {
+        double tan = f.tanElevation;
+        double bc = f.curvature;
+        int wi0 = w.wi0;
+        int iTop = w.iTop;
+        // i range where the line is on (or within half a cell of) the grid: −1 < k + m·i < nMin
+        int iHi = iTop;
+        int iLo = wi0;
+        if (m > 0) {
+            iHi = (int) Math.min(iTop, Math.floor((nMin - k) / m) + 1);
+            iLo = (int) Math.max(wi0, Math.ceil((-1 - k) / m) - 1);
+        } else if (k < -1 || k > nMin - 1) {
+            iHi = iLo - 1;
+        }
+        // columns of the window the walk does not reach have no upstream terrain
+        int wi1 = w.wi1;
+        if (iHi < iLo) {
+            java.util.Arrays.fill(line.height, Double.NEGATIVE_INFINITY);
+            return;
+        }
+        java.util.Arrays.fill(line.height, 0, iLo - wi0, Double.NEGATIVE_INFINITY);
+        if (iHi < wi1) {
+            java.util.Arrays.fill(line.height, iHi + 1 - wi0, wi1 + 1 - wi0, Double.NEGATIVE_INFINITY);
+        }
+        if (bc == 0 && uniformStep == uniformStep && !f.soft()) {
+            walkUniform(k, iLo, iHi, wi0, wi1, line.height);
+            return;
+        }
+        double[] pos = line.pos;
+        boolean uniform = uniformStep == uniformStep;
+        double step = uniformStep;
+        // pos[i - wi0] = distance downstream from iHi
+        pos[iHi - wi0] = 0;
+        double best = Double.NEGATIVE_INFINITY;   // max of z + tan·P (no curvature)
+        double bestP = 0;
+        int hullHead = 0;
+        int hullSize = 0;
+        double[] ha = line.hullA;
+        double[] hb = line.hullB;
+        double[] hp = line.hullP;
+        for (int i = iHi; i >= iLo; i--) {
+            if (i < iHi) {
+                if (uniform) {
+                    pos[i - wi0] = (iHi - i) * step;
+                } else {
+                    int jr = Math.max(0, Math.min(nMin - 1, k + pf[i] + (pr[i] >= 0.5 ? 1 : 0)));
+                    pos[i - wi0] = pos[i + 1 - wi0] + f.metresPerStep[rowOf(i, jr)];
+                }
+            }
+            double p = pos[i - wi0];
+            if (i + 2 <= iHi) {
+                double z = lineSample(k, i + 2);
+                if (z == z) {
+                    double pz = pos[i + 2 - wi0];
+                    if (bc == 0) {
+                        double val = z + tan * pz;
+                        if (val > best) {
+                            best = val;
+                            bestP = pz;
+                        }
+                    } else {
+                        // line of the upper envelope: value(P) = A + B·P − tan·P − bc·P², slopes B increasing
+                        double na = z + tan * pz - bc * pz * pz;
+                        double nb = 2 * bc * pz;
+                        while (hullSize - hullHead >= 2) {
+                            int l1 = hullSize - 2;
+                            int l2 = l1 + 1;
+                            // l2 is useless if the intersection of l1 and new is left of that of l1 and l2
+                            double x12 = (ha[l1] - ha[l2]) / (hb[l2] - hb[l1]);
+                            double x1n = (ha[l1] - na) / (nb - hb[l1]);
+                            if (x1n <= x12) {
+                                hullSize--;
+                            } else {
+                                break;
+                            }
+                        }
+                        if (hullSize > hullHead && nb == hb[hullSize - 1]) {
+                            if (na > ha[hullSize - 1]) {
+                                ha[hullSize - 1] = na;
+                                hp[hullSize - 1] = pz;
+                            }
+                        } else {
+                            ha[hullSize] = na;
+                            hb[hullSize] = nb;
+                            hp[hullSize] = pz;
+                            hullSize++;
+                        }
+                    }
+                }
+            }
+            if (i <= wi1) {
+                int at = i - wi0;
+                if (bc == 0) {
+                    line.height[at] = best - tan * p;
+                    line.occluder[at] = p - bestP;
+                } else if (hullSize > hullHead) {
+                    while (hullSize - hullHead >= 2
+                            && ha[hullHead + 1] + hb[hullHead + 1] * p >= ha[hullHead] + hb[hullHead] * p) {
+                        hullHead++;
+                    }
+                    line.height[at] = ha[hullHead] + hb[hullHead] * p - tan * p - bc * p * p;
+                    line.occluder[at] = p - hp[hullHead];
+                } else {
+                    line.height[at] = Double.NEGATIVE_INFINITY;
+                }
+            }
+        }
+    }
+
+    /** {@link #walkLine} for hard shadows on a grid with one step length and no curvature: a running maximum. */
+    private void walkUniform(int k, int iLo, int iHi, int wi0, int wi1, double[] height) {
+        double drop = f.tanElevation * uniformStep;
+        // best = max over samples i' ≥ i + 2 of z(i') − (i' − i)·drop, kept relative to the current i
+        double best = Double.NEGATIVE_INFINITY;
+        double prev = Double.NEGATIVE_INFINITY;   // sample at i + 1 (joins best one step later)
+        for (int i = iHi; i >= iLo; i--) {
+            if (i <= wi1) {
+                height[i - wi0] = best;
+            }
+            double z = lineSample(k, i);
+            best = Math.max(best, prev) - drop;
+            prev = z == z ? z - drop : Double.NEGATIVE_INFINITY;
+        }
+    }
+
+    /** Evaluates the cells between lines k and k + 1. */
+    private void band(Window w, int k, Line a, Line b) {
+        double tan = f.tanElevation;
+        boolean soft = f.soft();
+        int iLo = w.wi0;
+        int iHi = w.wi1;
+        if (m > 0) {
+            // cells j = k + floor(m·i) (+1) with wj0 ≤ j ≤ wj1
+            iHi = (int) Math.min(iHi, Math.floor((w.wj1 - k + 1) / m) + 1);
+            iLo = (int) Math.max(iLo, Math.ceil((w.wj0 - k - 1) / m) - 1);
+        }
+        for (int i = iLo; i <= iHi; i++) {
+            double fr = pr[i];
+            int j = k + pf[i] + (fr > 0 ? 1 : 0);
+            if (j < w.wj0 || j > w.wj1) {
+                continue;
+            }
+            double phi = fr > 0 ? 1 - fr : 0;
+            int at = i - w.wi0;
+            int cell = idx(i, j);
+            double z0 = v[cell];
+            float result;
+            if (z0 != z0) {
+                result = 0f;
+            } else {
+                double ha = a.height[at];
+                double hb = b.height[at];
+                double s;
+                double occ;
+                if (phi == 0 || hb == Double.NEGATIVE_INFINITY) {
+                    s = ha;
+                    occ = a.occluder[at];
+                } else if (ha == Double.NEGATIVE_INFINITY) {
+                    s = hb;
+                    occ = b.occluder[at];
+                } else {
+                    s = ha + (hb - ha) * phi;
+                    occ = a.occluder[at] + (b.occluder[at] - a.occluder[at]) * phi;
+                }
+                if (!soft) {
+                    result = (s > z0 || localBlocked(i, j, z0)) ? 1f : 0f;
+                } else {
+                    double slope = s == Double.NEGATIVE_INFINITY ? Double.NEGATIVE_INFINITY
+                            : tan + (s - z0) / occ;
+                    slope = Math.max(slope, localMaxSlope(i, j, z0));
+                    result = (float) SunDisk.hiddenFraction(f.elevationDeg, Math.toDegrees(Math.atan(slope)),
+                            f.sunRadiusDeg);
+                }
+            }
+            int col = c0 + ci * i + cj * j;
+            int row = r0 + ri * i + rj * j;
+            w.out[(row - w.win.row()) * w.win.width() + (col - w.win.col())] = result;
+        }
+    }
+
+    /** Terrain at fractional frame position (i + t, j + m·t), or NaN off the grid or no-data. */
+    private double frameSample(int i, int j, double t) {
+        double fi = i + t;
+        double fj = j + m * t;
+        double x = c0 + ci * fi + cj * fj;
+        double y = r0 + ri * fi + rj * fj;
+        int w = gridW;
+        int h = v.length / w;
+        if (TerrainSampler.isOutside(x, y, w, h)) {
+            return Double.NaN;
+        }
+        return bilinear ? TerrainSampler.bilinear(v, w, h, x, y) : TerrainSampler.nearest(v, w, h, x, y);
+    }
+
+    /** Offsets t of the first-cell samples: eighths up to one cell, or just the one-cell sample. */
+    private int firstSample() {
+        return firstCellTest ? 1 : SUB_STEPS;
+    }
+
+    /** True when the ray from cell (i, j) is blocked within its first major step. */
+    private boolean localBlocked(int i, int j, double z0) {
+        double d = f.metresPerStep[rowOf(i, j)];
+        double tan = f.tanElevation;
+        double bc = f.curvature;
+        if (bilinear && i + 1 < nMaj && j + 1 < nMin) {
+            double z10 = v[idx(i + 1, j)];
+            double z01 = v[idx(i, j + 1)];
+            double z11 = v[idx(i + 1, j + 1)];
+            if (z10 == z10 && z01 == z01 && z11 == z11) {
+                if (z10 <= z0 && z01 <= z0 && z11 <= z0) {
+                    return false;   // the bilinear surface never exceeds its highest corner
+                }
+                // terrain − ray along the first step is t·(A + B·t): linear in t after dividing by t > 0, so
+                // its sign over the samples t = q/8 is decided at the first and the last sample
+                double lin = (z10 - z0) + (z01 - z0) * m - d * tan;
+                double quad = (z11 - z10 - z01 + z0) * m - bc * d * d;
+                double tFirst = (double) firstSample() / SUB_STEPS;
+                return lin + quad * tFirst > 0 || lin + quad > 0;
+            }
+        }
+        for (int q = firstSample(); q <= SUB_STEPS; q++) {
+            double t = (double) q / SUB_STEPS;
+            double fi = i + t;
+            double fj = j + m * t;
+            if (fi > nMaj - 0.5 || fj > nMin - 0.5) {
+                return false;
+            }
+            double z = frameSample(i, j, t);
+            double dist = t * d;
+            if (z == z && z - bc * dist * dist > z0 + dist * tan) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Highest slope (z − z0)/d seen within the first major step of the ray from (i, j); −∞ when none. */
+    private double localMaxSlope(int i, int j, double z0) {
+        double d = f.metresPerStep[rowOf(i, j)];
+        double bc = f.curvature;
+        double best = Double.NEGATIVE_INFINITY;
+        for (int q = firstSample(); q <= SUB_STEPS; q++) {
+            double t = (double) q / SUB_STEPS;
+            if (i + t > nMaj - 0.5 || j + m * t > nMin - 0.5) {
+                break;
+            }
+            double z = frameSample(i, j, t);
+            double dist = t * d;
+            if (z == z) {
+                best = Math.max(best, (z - bc * dist * dist - z0) / dist);
+            }
+        }
+        return best;
+    }
+}

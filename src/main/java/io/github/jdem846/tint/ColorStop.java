@@ -1,0 +1,71 @@
+package io.github.jdem846.tint;
+
+import java.util.Objects;
+
+/**
+ * One stop of a {@link ColorRamp}: at {@code level} the ramp has colour {@code argb} (non-premultiplied
+ * 0xAARRGGBB).
+ *
+ * @param level a percent of the DEM's range in [0, 100] ({@link StopUnit#PERCENT}) or an elevation
+ *              ({@link StopUnit#ABSOLUTE}); finite
+ * @param unit  what {@code level} measures
+ * @param argb  the colour at the stop
+ */
+public record ColorStop(double level, StopUnit unit, int argb) {
+
+    public ColorStop {
+        Objects.requireNonNull(unit, "unit");
+        if (!Double.isFinite(level)) {
+            throw new IllegalArgumentException("a colour stop's level must be a finite number, got " + level);
+        }
+        if (unit == StopUnit.PERCENT && (level < 0 || level > 100)) {
+            throw new IllegalArgumentException("a percent stop must lie in [0, 100], got " + level + "%");
+        }
+    }
+
+    /** An opaque stop at {@code percent} of the DEM's range. */
+    public static ColorStop percent(double percent, int red, int green, int blue) {
+        return new ColorStop(percent, StopUnit.PERCENT, rgba(red, green, blue, 255));
+    }
+
+    /** An opaque stop at elevation {@code elevation}. */
+    public static ColorStop absolute(double elevation, int red, int green, int blue) {
+        return new ColorStop(elevation, StopUnit.ABSOLUTE, rgba(red, green, blue, 255));
+    }
+
+    /** Packs 0–255 channels into 0xAARRGGBB, rejecting values outside 0–255. */
+    public static int rgba(int red, int green, int blue, int alpha) {
+        checkChannel("red", red);
+        checkChannel("green", green);
+        checkChannel("blue", blue);
+        checkChannel("alpha", alpha);
+        return Argb.of(red, green, blue, alpha);
+    }
+
+    public int red() {
+        return Argb.red(argb);
+    }
+
+    public int green() {
+        return Argb.green(argb);
+    }
+
+    public int blue() {
+        return Argb.blue(argb);
+    }
+
+    public int alpha() {
+        return Argb.alpha(argb);
+    }
+
+    @Override
+    public String toString() {
+        return (unit == StopUnit.PERCENT ? level + "%" : level + "") + " " + Argb.format(argb);
+    }
+
+    private static void checkChannel(String name, int value) {
+        if (value < 0 || value > 255) {
+            throw new IllegalArgumentException(name + " must be an integer 0–255, got " + value);
+        }
+    }
+}

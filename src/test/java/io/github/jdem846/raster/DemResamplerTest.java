@@ -1,0 +1,72 @@
+package io.github.jdem846.raster;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.github.jdem846.testing.TestDems;
+import org.junit.jupiter.api.Test;
+
+class DemResamplerTest {
+
+    @Test
+    void integerShrinkIsTheBlockMeanOfValidCells() {
+        float n = Float.NaN;
+        Dem dem = TestDems.metric(4, 2, 10, new float[] {1, 3, n, n, 5, 7, n, 8});
+        Dem out = DemResampler.resample(dem, 2, 1);
+        assertEquals(4f, out.get(0, 0)); // (1+3+5+7)/4
+        assertEquals(8f, out.get(1, 0)); // only the valid cell counts
+        assertEquals(20.0, out.geometry().cellWidthMeters(0), 1e-12);
+        assertEquals(20.0, out.geometry().cellHeightMeters(0), 1e-12);
+    }
+
+    @Test
+    void allNoDataBlockIsNoData() {
+        float n = Float.NaN;
+        Dem dem = TestDems.metric(2, 2, 1, new float[] {n, n, n, n});
+        assertTrue(Float.isNaN(DemResampler.resample(dem, 1, 1).get(0, 0)));
+    }
+
+    @Test
+    void fractionalShrinkPreservesTheMeanOfAPlaneAndTheExtent() {
+        Dem real = TestDems.load(TestDems.BIG_TUJUNGA);
+        Dem out = DemResampler.resample(real, 500, 300);
+        assertEquals(500, out.width());
+        assertEquals(300, out.height());
+        assertEquals(real.geometry().eastX(), out.geometry().eastX(), 1e-6);
+        assertEquals(real.geometry().southY(), out.geometry().southY(), 1e-6);
+        // An area-weighted mean keeps the overall mean (all cells valid, each input cell counted once in total).
+        double inMean = mean(real);
+        double outMean = mean(out);
+        assertEquals(inMean, outMean, 0.01);
+        assertTrue(out.statistics().max() <= real.statistics().max());
+        assertTrue(out.statistics().min() >= real.statistics().min());
+    }
+
+    @Test
+    void enlargingAPlaneKeepsItAPlane() {
+        float[] v = new float[9];
+        for (int r = 0; r < 3; r++) {
+            for (int c = 0; c < 3; c++) {
+                v[r * 3 + c] = 2 * c + 5 * r;
+            }
+        }
+        Dem out = DemResampler.resample(TestDems.metric(3, 3, 1, v), 6, 6);
+        // interior output cell (2, 3): centre at input coordinates x = (2.5)/2 − 0.5 = 0.75, y = 1.25
+        assertEquals(2 * 0.75 + 5 * 1.25, out.get(2, 3), 1e-5);
+    }
+
+    @Test
+    void sameSizeIsIdentity() {
+        Dem dem = TestDems.load(TestDems.VOLCANO);
+        assertSame(dem, DemResampler.resample(dem, dem.width(), dem.height()));
+    }
+
+    private static double mean(Dem d) {
+        double s = 0;
+        for (float f : d.backingArray()) {
+            s += f;
+        }
+        return s / d.backingArray().length;
+    }
+}
