@@ -17,10 +17,13 @@ final class BlockReader {
         void accept(int outRow, float[] values) throws IOException;
     }
 
-    /** Input cells decoded per band, about 16 MB of float32. */
-    private static final long TARGET_BAND_CELLS = 1L << 22;
-
     private BlockReader() {
+    }
+
+    /** Bytes of the band buffer {@link #read} allocates for this window (float32). */
+    static long bandBytes(RasterSource source, Window.Cells window, int d) {
+        return 4L * window.width() * bandRows(source.naturalRowBlock(), d, window.width(), window.height(),
+                source.bandCells());
     }
 
     /** Output width of a window of {@code w} columns at decimation {@code d}. */
@@ -39,7 +42,7 @@ final class BlockReader {
         int h = window.height();
         int outW = outputSize(w, d);
         int outH = outputSize(h, d);
-        int bandRows = bandRows(source.naturalRowBlock(), d, w, h);
+        int bandRows = bandRows(source.naturalRowBlock(), d, w, h, source.bandCells());
         float[] band = new float[bandRows * w];
         float[] out = new float[outW];
         double[] sum = d > 1 ? new double[outW] : null;
@@ -93,10 +96,10 @@ final class BlockReader {
 
     /**
      * Rows per band: a multiple of {@code d} (so blocks never straddle bands) and of the format's natural block
-     * (so strips and tiles are decoded about once), near {@link #TARGET_BAND_CELLS} cells, at most the window
-     * height rounded up to {@code d}; the whole window when one strip covers it.
+     * (so strips and tiles are decoded about once), near {@code targetCells} cells, at most the window height
+     * rounded up to {@code d}; the whole window when one strip covers it.
      */
-    static int bandRows(int natural, int d, int w, int h) {
+    static int bandRows(int natural, int d, int w, int h, long targetCells) {
         long cap = ((long) h + d - 1) / d * d;
         if (natural >= h) {
             return (int) cap; // one strip holds the whole window: decode it once
@@ -105,7 +108,7 @@ final class BlockReader {
         if (unit > cap) {
             unit = d;
         }
-        long rows = Math.max(unit, (TARGET_BAND_CELLS / Math.max(1, w)) / unit * unit);
+        long rows = Math.max(unit, (targetCells / Math.max(1, w)) / unit * unit);
         return (int) Math.max(1, Math.min(rows, cap));
     }
 

@@ -53,8 +53,8 @@ public final class DemReader {
             int d = request.decimation();
             int outW = BlockReader.outputSize(cells.width(), d);
             int outH = BlockReader.outputSize(cells.height(), d);
-            MemoryGuard.requireFits(file, outW, outH, "read a window or a decimated version, or give Java more"
-                    + " heap with -Xmx");
+            MemoryGuard.requireFits(file, outW, outH, BlockReader.bandBytes(source, cells, d), "read a window or a"
+                    + " decimated version, or give Java more heap with -Xmx");
             float[] values = new float[outW * outH];
             BlockReader.read(source, cells, d, info.noDataOrNaN(),
                     (row, v) -> System.arraycopy(v, 0, values, row * outW, outW));
@@ -124,7 +124,8 @@ public final class DemReader {
         }
     }
 
-    private static RasterSource open(Path file) throws IOException {
+    /** Opens the right {@link RasterSource} for the file (package-private for tests). */
+    static RasterSource open(Path file) throws IOException {
         Objects.requireNonNull(file, "file");
         FormatDetector.Detected detected = FormatDetector.detect(file);
         Path data = detected.dataFile();

@@ -93,6 +93,16 @@ final class GeoTiffSource implements RasterSource {
         return rowBlock;
     }
 
+    /**
+     * Large bands: TwelveMonkeys 3.15.0 walks every strip or tile of the file on each read, creating a decompressor
+     * for each, even those outside the source region, so each call costs time in proportion to the whole file.
+     * Up to 32 M cells per call (less on small heaps: 1/64 of the maximum heap, at least 4 M cells).
+     */
+    @Override
+    public long bandCells() {
+        return Math.max(1L << 22, Math.min(1L << 25, Runtime.getRuntime().maxMemory() / 64));
+    }
+
     @Override
     public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
         ImageReadParam param = reader.getDefaultReadParam();

@@ -14,11 +14,13 @@ final class MemoryGuard {
     }
 
     /**
-     * Checks that {@code width × height} float32 cells fit in the heap now available.
+     * Checks that {@code width × height} float32 cells, plus {@code workBytes} of working buffers, fit in the heap
+     * now available.
      *
      * @throws DemFormatException saying how much memory the grid needs and how much the heap allows
      */
-    static void requireFits(Path file, int width, int height, String advice) throws DemFormatException {
+    static void requireFits(Path file, int width, int height, long workBytes, String advice)
+            throws DemFormatException {
         long cells = (long) width * height;
         long bytes = cells * Float.BYTES;
         Runtime rt = Runtime.getRuntime();
@@ -29,7 +31,7 @@ final class MemoryGuard {
                     + " cells, more than one Java array can hold (" + MAX_ARRAY + "); it would need "
                     + human(bytes) + " (" + advice + ")");
         }
-        if (bytes > available) {
+        if (bytes + workBytes > available) {
             throw new DemFormatException(file, "a " + width + " × " + height + " grid needs " + human(bytes)
                     + " as float32, but the Java heap allows at most " + human(max) + " (Runtime.maxMemory()), "
                     + human(Math.max(0, available)) + " of it free; " + advice);

@@ -29,6 +29,14 @@ interface RasterSource extends Closeable {
         return 1;
     }
 
+    /**
+     * About how many cells to decode per call of {@link #readRows}: small for formats with cheap random access,
+     * large for decoders whose every call has a cost proportional to the whole file.
+     */
+    default long bandCells() {
+        return 1L << 20;
+    }
+
     @Override
     void close() throws IOException;
 }

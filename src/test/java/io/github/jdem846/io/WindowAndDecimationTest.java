@@ -200,7 +200,7 @@ class WindowAndDecimationTest {
         for (int natural : new int[] {1, 6, 16, 128, 256, 400, 10_000}) {
             for (int d : new int[] {1, 2, 3, 7, 16, 1000}) {
                 for (int h : new int[] {1, 5, 400, 3601}) {
-                    int rows = BlockReader.bandRows(natural, d, 600, h);
+                    int rows = BlockReader.bandRows(natural, d, 600, h, 1L << 20);
                     assertEquals(0, rows % d, "natural " + natural + ", d " + d + ", h " + h);
                     assertTrue(rows >= 1 && rows <= ((h + d - 1) / d) * d, "rows " + rows);
                 }
