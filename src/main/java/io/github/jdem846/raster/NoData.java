@@ -14,19 +14,24 @@ public final class NoData {
         return Float.isNaN(cell) || (!Double.isNaN(declared) && cell == toFloat32(declared));
     }
 
+    /** Relative distance from ±Float.MAX_VALUE within which a declared value means ±Float.MAX_VALUE. */
+    private static final double FLOAT_MAX_SNAP = 1e-5;
+
     /**
-     * The declared value as the float32 that a file storing it would hold. Values just beyond the float range
-     * (a rounded {@code -3.4028235e38} printed with more digits) map to ±Float.MAX_VALUE rather than infinity.
+     * The declared value as the float32 that a file storing it would hold. Values near the end of the float range
+     * mean ±{@code Float.MAX_VALUE}, the usual no-data of float rasters, however the header rounded it: printed
+     * with more digits ({@code -3.4028235e38}, which overflows float32) or fewer ({@code -3.40282e+38}, as
+     * {@code printf %g} writes it, which would otherwise be a different float32).
      */
     public static float toFloat32(double declared) {
         if (Double.isNaN(declared)) {
             return Float.NaN;
         }
-        float f = (float) declared;
-        if (Float.isInfinite(f) && !Double.isInfinite(declared) && Math.abs(declared) < 3.5e38) {
-            return Math.copySign(Float.MAX_VALUE, (float) declared);
+        if (!Double.isInfinite(declared)
+                && Math.abs(Math.abs(declared) - Float.MAX_VALUE) <= FLOAT_MAX_SNAP * Float.MAX_VALUE) {
+            return (float) Math.copySign(Float.MAX_VALUE, declared);
         }
-        return f;
+        return (float) declared;
     }
 
     /** Replaces every no-data cell of {@code values} with NaN, in place. */
