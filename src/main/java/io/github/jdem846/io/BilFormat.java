@@ -25,7 +25,8 @@ final class BilFormat {
 
     static RasterSource open(Path bil) throws IOException {
         Path hdr = SidecarCrs.sibling(bil, "hdr");
-        EsriHeader h = EsriHeader.read(hdr, "a .bil needs its .hdr beside it, named " + hdr.getFileName());
+        EsriHeader h = EsriHeader.read(hdr, "the BIL " + bil.getFileName() + " needs its header beside it, named "
+                + hdr.getFileName());
         List<String> notices = new ArrayList<>();
         EsriGridLayout layout = EsriGridLayout.of(h, true, notices);
         int bands = h.has("nbands") ? h.positiveInt("nbands") : 1;

@@ -52,6 +52,10 @@ final class GeoTiffSource implements RasterSource {
         try {
             reader = new TIFFImageReaderSpi().createReaderInstance();
             reader.setInput(stream, true, false);
+            if (reader.getNumImages(true) < 1) {
+                throw new DemFormatException(tif, "the TIFF holds no image (its first image directory is missing;"
+                        + " truncated or corrupt?)");
+            }
             int width = reader.getWidth(0);
             int height = reader.getHeight(0);
             IIOMetadata metadata = reader.getImageMetadata(0);
@@ -309,9 +313,10 @@ final class GeoTiffSource implements RasterSource {
         }
     }
 
+    /** The decoder's own message, or the kind of failure when it has none. */
     private static String describe(Throwable e) {
         String m = e.getMessage();
-        return e.getClass().getSimpleName() + (m != null && !m.isBlank() ? ": " + m : "");
+        return m != null && !m.isBlank() ? m : "the decoder failed (" + e.getClass().getSimpleName() + ")";
     }
 
     private static void closeQuietly(ImageReader reader, ImageInputStream stream) {

@@ -25,8 +25,8 @@ final class GridFloatFormat {
 
     static RasterSource open(Path flt) throws IOException {
         Path hdr = SidecarCrs.sibling(flt, "hdr");
-        EsriHeader h = EsriHeader.read(hdr, "a GridFloat .flt needs its .hdr beside it, named "
-                + hdr.getFileName());
+        EsriHeader h = EsriHeader.read(hdr, "the GridFloat " + flt.getFileName() + " needs its header beside it,"
+                + " named " + hdr.getFileName());
         List<String> notices = new ArrayList<>();
         EsriGridLayout layout = EsriGridLayout.of(h, false, notices);
         ByteOrder order = byteOrder(h, notices);
