@@ -25,17 +25,37 @@ public final class DemLoader {
         /**
          * The halo in source cells on each side: {west, north, east, south}.
          *
+         * @param file   the file being read (e.g. to stream its statistics)
          * @param info   the file's header
          * @param window the cells of the output window
          */
-        int[] cells(DemInfo info, Window.Cells window) throws IOException;
+        int[] cells(Path file, DemInfo info, Window.Cells window) throws IOException;
 
         /** No halo. */
-        Halo NONE = (info, window) -> new int[4];
+        Halo NONE = (file, info, window) -> new int[4];
 
         /** The same number of cells on every side. */
         static Halo uniform(int cells) {
-            return (info, window) -> new int[] {cells, cells, cells, cells};
+            return (file, info, window) -> new int[] {cells, cells, cells, cells};
+        }
+
+        /**
+         * The halo a windowed render with cast shadows must read toward the sun ({@link
+         * io.github.jdem846.shadow.ShadowHalo}); the file's maximum is streamed once, only when a window is given.
+         */
+        static Halo shadows(io.github.jdem846.light.LightDirection light,
+                            io.github.jdem846.shadow.ShadowOptions options) {
+            return ShadowHaloSource.of(light, options);
+        }
+
+        /** The larger of this halo and {@code other} on each side. */
+        default Halo union(Halo other) {
+            return (file, info, window) -> {
+                int[] a = cells(file, info, window);
+                int[] b = other.cells(file, info, window);
+                return new int[] {Math.max(a[0], b[0]), Math.max(a[1], b[1]), Math.max(a[2], b[2]),
+                    Math.max(a[3], b[3])};
+            };
         }
     }
 
@@ -101,7 +121,7 @@ public final class DemLoader {
         int[] px = size.pixelsFor(win.width(), win.height());
         double fx = (double) win.width() / px[0];
         double fy = (double) win.height() / px[1];
-        int[] h = halo.cells(info, win);
+        int[] h = halo.cells(file, info, win);
         // Halo in source cells, rounded up to whole output pixels so the window keeps pixel-aligned edges.
         int west = haloCells(h[0], fx, win.col());
         int north = haloCells(h[1], fy, win.row());
