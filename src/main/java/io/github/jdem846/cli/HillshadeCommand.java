@@ -55,7 +55,7 @@ public final class HillshadeCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         HillshadeMethod m = multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : HillshadeMethod.fromName(method);
         HillshadeOptions options = shading.options();
-        DemLoader.Loaded loaded = input.load(DemLoader.Halo.uniform(1));
+        DemLoader.Loaded loaded = input.load(DemLoader.Halo.uniform(1), false);
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), execution.tileSize, err);
         float[] illumination;

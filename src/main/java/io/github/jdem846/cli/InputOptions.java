@@ -86,10 +86,13 @@ public final class InputOptions {
         }
     }
 
-    /** Loads what the picture needs, with {@code halo}; the bundled sample when no FILE was given. */
-    DemLoader.Loaded load(DemLoader.Halo halo) throws IOException {
+    /**
+     * Loads what the picture needs, with {@code halo} (and the whole file's elevation range when asked); the
+     * bundled sample when no FILE was given.
+     */
+    DemLoader.Loaded load(DemLoader.Halo halo, boolean fileStatistics) throws IOException {
         if (file != null) {
-            return DemLoader.load(file, window(), size(), halo);
+            return DemLoader.load(file, window(), size(), halo, fileStatistics);
         }
         Path tmp = Files.createTempFile("jdem846-sample-", ".tif");
         try {
@@ -99,7 +102,7 @@ public final class InputOptions {
                 }
                 Files.copy(in, tmp, StandardCopyOption.REPLACE_EXISTING);
             }
-            return DemLoader.load(tmp, window(), size(), halo);
+            return DemLoader.load(tmp, window(), size(), halo, fileStatistics);
         } finally {
             Files.deleteIfExists(tmp);
         }

@@ -78,10 +78,10 @@ public final class RenderCommand implements Callable<Integer> {
         if (scene.hasShadows()) {
             halo = halo.union(CommandSupport.shadowHalo(sun, scene.shadowOptions(), err));
         }
-        DemLoader.Loaded loaded = input.load(halo);
+        DemLoader.Loaded loaded = input.load(halo, scene.tint() != null);
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), execution.tileSize, err);
-        scene = scene.withLight(lighting.field()).withFade(lighting.fade());
+        scene = scene.withLight(lighting.field()).withFade(lighting.fade()).withTintRange(loaded.fileStatistics());
         RenderedImage image;
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
             image = new Renderer(execution.settings()).render(loaded.dem(), scene, progress);

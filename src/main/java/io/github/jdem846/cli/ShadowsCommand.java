@@ -56,7 +56,7 @@ public final class ShadowsCommand implements Callable<Integer> {
         }
         Scene scene = Scene.defaults().withTint(null).withHillshade(null).withShadows(alg)
                 .withShadowOptions(shadowOptions.options());
-        DemLoader.Loaded loaded = input.load(CommandSupport.shadowHalo(sun, scene.shadowOptions(), err));
+        DemLoader.Loaded loaded = input.load(CommandSupport.shadowHalo(sun, scene.shadowOptions(), err), false);
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), execution.tileSize, err);
         float[] mask;

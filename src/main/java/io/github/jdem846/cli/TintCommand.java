@@ -44,9 +44,10 @@ public final class TintCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(null);
-        DemLoader.Loaded loaded = input.load(DemLoader.Halo.NONE);
+        DemLoader.Loaded loaded = input.load(DemLoader.Halo.NONE, scene.tint() != null);
         CommandSupport.printNotices(loaded, err);
-        RenderedImage image = new Renderer(execution.settings()).render(loaded.dem(), scene, RenderProgress.NONE);
+        RenderedImage image = new Renderer(execution.settings()).render(loaded.dem(),
+                scene.withTintRange(loaded.fileStatistics()), RenderProgress.NONE);
         output.writeRgba(loaded.crop(image.argb()), CommandSupport.outputGeometry(loaded), err);
         return 0;
     }

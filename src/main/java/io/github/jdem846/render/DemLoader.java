@@ -7,6 +7,7 @@ import io.github.jdem846.io.ReadRequest;
 import io.github.jdem846.io.Window;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.DemResampler;
+import io.github.jdem846.raster.ElevationStatistics;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Objects;
@@ -68,8 +69,11 @@ public final class DemLoader {
      * @param row     first row of the output window within {@code dem}
      * @param width   output width in pixels
      * @param height  output height in pixels
+     * @param fileStatistics elevation range of the whole file at full resolution (so that percent tints of a
+     *                       window or a reduced picture match the full picture), or {@code null} when not asked for
      */
-    public record Loaded(DemInfo info, Dem dem, int col, int row, int width, int height) {
+    public record Loaded(DemInfo info, Dem dem, int col, int row, int width, int height,
+                         ElevationStatistics fileStatistics) {
 
         /** True when the grid holds nothing but the output window. */
         public boolean hasNoHalo() {
@@ -111,8 +115,12 @@ public final class DemLoader {
 
     /**
      * Loads {@code file} for a picture of {@code window} (null = the whole grid) at {@code size}, with {@code halo}.
+     *
+     * @param fileStatistics also give the whole file's elevation range (streamed, without holding the grid, and
+     *                       only when the loaded grid is not the whole file at full resolution)
      */
-    public static Loaded load(Path file, Window window, OutputSize size, Halo halo) throws IOException {
+    public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics)
+            throws IOException {
         Objects.requireNonNull(size, "size");
         Objects.requireNonNull(halo, "halo");
         DemInfo info = DemReader.inspect(file);
@@ -138,7 +146,13 @@ public final class DemLoader {
         int row = (int) Math.round(north / fy);
         int w = Math.min(px[0], outW - col);
         int hgt = Math.min(px[1], outH - row);
-        return new Loaded(loaded.info(), dem, col, row, w, hgt);
+        ElevationStatistics stats = null;
+        if (fileStatistics) {
+            boolean whole = read.width() == info.width() && read.height() == info.height()
+                    && dem.width() == info.width() && dem.height() == info.height();
+            stats = whole ? dem.statistics() : DemReader.statistics(file);
+        }
+        return new Loaded(loaded.info(), dem, col, row, w, hgt, stats);
     }
 
     /** Halo cells on one side: whole output pixels' worth, at most what the grid has on that side. */

@@ -57,7 +57,7 @@ public final class Renderer {
         int width = dem.width();
         int height = dem.height();
         TintFunction tint = scene.tint() == null ? elevation -> Float.isNaN(elevation) ? 0 : PLAIN_GRAY
-                : scene.tint().bind(dem.statistics());
+                : scene.tint().bind(scene.tintRange() != null ? scene.tintRange() : dem.statistics());
         float[] shadow = castShadows(dem, scene, pool, progress);
         IlluminationStage illumination = scene.hillshade() == null ? null
                 : scene.hillshade().stage(scene.hillshadeOptions());
