@@ -1,5 +1,6 @@
 package io.github.jdem846.io;
 
+import io.github.jdem846.geo.GeoKeys;
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.raster.GridGeometry;
@@ -294,7 +295,7 @@ final class GeoTiffSource implements RasterSource {
             originY = height;
         }
         PixelAnchor anchor = PixelAnchor.CORNER;
-        if (keys.code(GeoKeyDirectory.GT_RASTER_TYPE).orElse(1) == 2) {
+        if (keys.code(GeoKeys.GT_RASTER_TYPE).orElse(1) == 2) {
             // PixelIsPoint: the tie point names the centre of the cell; move to its outer corner.
             anchor = PixelAnchor.CENTER;
             originX -= cellW / 2;
