@@ -1,10 +1,15 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.geo.LatLon;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.LoadedDem;
 import io.github.jdem846.io.ReadRequest;
 import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.sun.Observer;
+import io.github.jdem846.sun.SunLightField;
+import io.github.jdem846.sun.SunPosition;
+import io.github.jdem846.sun.ZonedTimeParser;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
@@ -34,6 +39,14 @@ public final class InfoCommand implements Callable<Integer> {
     @Option(names = "--json", description = "Print one JSON object instead of text.")
     boolean json;
 
+    @Option(names = "--sun-time", paramLabel = "TIME",
+            description = "Also give the sun at the DEM's centre at this instant (ISO-8601 with offset or zone).")
+    String sunTime;
+
+    @Option(names = "--sun-at", paramLabel = "LAT,LON",
+            description = "With --sun-time: the place, when the DEM's CRS cannot give the centre's latitude/longitude.")
+    String sunAt;
+
     @Mixin
     VerboseOption verbose;
 
@@ -52,7 +65,15 @@ public final class InfoCommand implements Callable<Integer> {
             info = DemReader.inspect(file);
             stats = DemReader.statistics(file);
         }
-        InfoReport report = new InfoReport(info, stats);
+        SunPosition sun = null;
+        if (sunTime != null) {
+            LatLon place = sunAt == null ? null : LatLon.parse(sunAt);
+            sun = SunLightField.of(info.geometry(), ZonedTimeParser.parse(sunTime), place, 0, Observer.SEA_LEVEL)
+                    .centralSun();
+        } else if (sunAt != null) {
+            throw new IllegalArgumentException("--sun-at needs --sun-time");
+        }
+        InfoReport report = new InfoReport(info, stats, sunTime, sun);
         spec.commandLine().getOut().println(json ? report.toJson() : report.toText());
         spec.commandLine().getOut().flush();
         return 0;

@@ -6,6 +6,7 @@ import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.raster.PixelAnchor;
+import io.github.jdem846.sun.SunPosition;
 import java.util.Locale;
 import java.util.Optional;
 
@@ -16,8 +17,17 @@ final class InfoReport {
     private final ElevationStatistics stats;
     private final GridGeometry g;
     private final Optional<LatLonBox> latLon;
+    private final String sunTime;
+    private final SunPosition sun;
 
     InfoReport(DemInfo info, ElevationStatistics stats) {
+        this(info, stats, null, null);
+    }
+
+    /** With the sun at the DEM's centre at {@code sunTime} (both null for none). */
+    InfoReport(DemInfo info, ElevationStatistics stats, String sunTime, SunPosition sun) {
+        this.sunTime = sunTime;
+        this.sun = sun;
         this.info = info;
         this.stats = stats;
         this.g = info.geometry();
@@ -75,6 +85,11 @@ final class InfoReport {
                 + stats.noDataCount() + " of " + stats.totalCount() + " cells)");
         line(sb, "Elevation", stats.isEmpty() ? "no valid cells" : "min " + fmt(stats.min()) + ", max "
                 + fmt(stats.max()));
+        if (sun != null) {
+            line(sb, "Sun", String.format(Locale.ROOT, "azimuth %.4f°, elevation %.4f° (zenith %.4f°) at the "
+                    + "centre at %s%s", sun.azimuthDegrees(), sun.elevationDegrees(), sun.zenithDegrees(), sunTime,
+                    sun.isBelowHorizon() ? "; below the horizon" : ""));
+        }
         for (String n : info.notices()) {
             line(sb, "Notice", n);
         }
@@ -110,6 +125,10 @@ final class InfoReport {
                         .orElse("null"))
                 .string("anchor", g.declaredAnchor() == PixelAnchor.CENTER ? "center" : "corner")
                 .strings("notices", info.notices());
+        if (sun != null) {
+            j.raw("sun", new Json().string("time", sunTime).number("azimuth", sun.azimuthDegrees())
+                    .number("elevation", sun.elevationDegrees()).number("zenith", sun.zenithDegrees()).toString());
+        }
         return j.toString();
     }
 

@@ -14,6 +14,10 @@ import picocli.CommandLine.Command;
                 + "cast shadows (a modern port of Kevin M. Gill's jDem846).",
         subcommands = {
             CommandLine.HelpCommand.class,
+            RenderCommand.class,
+            HillshadeCommand.class,
+            TintCommand.class,
+            ShadowsCommand.class,
             InfoCommand.class,
             SunCommand.class,
         })

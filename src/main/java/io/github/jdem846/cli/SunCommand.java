@@ -1,7 +1,7 @@
 package io.github.jdem846.cli;
 
 import io.github.jdem846.sun.Body;
-import io.github.jdem846.sun.LatLon;
+import io.github.jdem846.geo.LatLon;
 import io.github.jdem846.sun.Observer;
 import io.github.jdem846.sun.SolarCalculator;
 import io.github.jdem846.sun.SunAtInstant;

@@ -1,5 +1,7 @@
 package io.github.jdem846.io;
 
+import static io.github.jdem846.geo.GeoKeys.*;
+
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Optional;
@@ -10,24 +12,6 @@ import java.util.Optional;
  */
 final class GeoKeyDirectory {
 
-    static final int GT_MODEL_TYPE = 1024;
-    static final int GT_RASTER_TYPE = 1025;
-    static final int GT_CITATION = 1026;
-    static final int GEOGRAPHIC_TYPE = 2048;
-    static final int GEOG_CITATION = 2049;
-    static final int GEOG_GEODETIC_DATUM = 2050;
-    static final int GEOG_ANGULAR_UNITS = 2054;
-    static final int GEOG_ELLIPSOID = 2056;
-    static final int GEOG_SEMI_MAJOR_AXIS = 2057;
-    static final int GEOG_SEMI_MINOR_AXIS = 2058;
-    static final int GEOG_INV_FLATTENING = 2059;
-    static final int PROJECTED_CS_TYPE = 3072;
-    static final int PCS_CITATION = 3073;
-    static final int PROJ_LINEAR_UNITS = 3076;
-    static final int PROJ_LINEAR_UNIT_SIZE = 3077;
-
-    /** GeoTIFF's "user-defined" code. */
-    static final int USER_DEFINED = 32767;
 
     private final Map<Integer, Object> keys; // Integer, double[] or String
 

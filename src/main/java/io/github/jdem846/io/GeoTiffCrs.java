@@ -1,20 +1,21 @@
 package io.github.jdem846.io;
 
-import static io.github.jdem846.io.GeoKeyDirectory.GEOGRAPHIC_TYPE;
-import static io.github.jdem846.io.GeoKeyDirectory.GEOG_ANGULAR_UNITS;
-import static io.github.jdem846.io.GeoKeyDirectory.GEOG_CITATION;
-import static io.github.jdem846.io.GeoKeyDirectory.GEOG_ELLIPSOID;
-import static io.github.jdem846.io.GeoKeyDirectory.GEOG_GEODETIC_DATUM;
-import static io.github.jdem846.io.GeoKeyDirectory.GEOG_INV_FLATTENING;
-import static io.github.jdem846.io.GeoKeyDirectory.GEOG_SEMI_MAJOR_AXIS;
-import static io.github.jdem846.io.GeoKeyDirectory.GEOG_SEMI_MINOR_AXIS;
-import static io.github.jdem846.io.GeoKeyDirectory.GT_CITATION;
-import static io.github.jdem846.io.GeoKeyDirectory.GT_MODEL_TYPE;
-import static io.github.jdem846.io.GeoKeyDirectory.PCS_CITATION;
-import static io.github.jdem846.io.GeoKeyDirectory.PROJECTED_CS_TYPE;
-import static io.github.jdem846.io.GeoKeyDirectory.PROJ_LINEAR_UNITS;
-import static io.github.jdem846.io.GeoKeyDirectory.PROJ_LINEAR_UNIT_SIZE;
-import static io.github.jdem846.io.GeoKeyDirectory.USER_DEFINED;
+import io.github.jdem846.geo.GeoKeys;
+import static io.github.jdem846.geo.GeoKeys.GEOGRAPHIC_TYPE;
+import static io.github.jdem846.geo.GeoKeys.GEOG_ANGULAR_UNITS;
+import static io.github.jdem846.geo.GeoKeys.GEOG_CITATION;
+import static io.github.jdem846.geo.GeoKeys.GEOG_ELLIPSOID;
+import static io.github.jdem846.geo.GeoKeys.GEOG_GEODETIC_DATUM;
+import static io.github.jdem846.geo.GeoKeys.GEOG_INV_FLATTENING;
+import static io.github.jdem846.geo.GeoKeys.GEOG_SEMI_MAJOR_AXIS;
+import static io.github.jdem846.geo.GeoKeys.GEOG_SEMI_MINOR_AXIS;
+import static io.github.jdem846.geo.GeoKeys.GT_CITATION;
+import static io.github.jdem846.geo.GeoKeys.GT_MODEL_TYPE;
+import static io.github.jdem846.geo.GeoKeys.PCS_CITATION;
+import static io.github.jdem846.geo.GeoKeys.PROJECTED_CS_TYPE;
+import static io.github.jdem846.geo.GeoKeys.PROJ_LINEAR_UNITS;
+import static io.github.jdem846.geo.GeoKeys.PROJ_LINEAR_UNIT_SIZE;
+import static io.github.jdem846.geo.GeoKeys.USER_DEFINED;
 
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.CrsResolver;

@@ -1,5 +1,6 @@
 package io.github.jdem846.io;
 
+import io.github.jdem846.geo.GeoKeys;
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.raster.GridGeometry;
@@ -66,6 +67,7 @@ final class GeoTiffSource implements RasterSource {
             if (bands > 1) {
                 notices.add("the file has " + bands + " bands; band 1 is read");
             }
+            checkCompression(tif, fields);
             checkNotTruncated(tif, fields);
             GridGeometry geometry = geometry(tif, fields, width, height, notices);
             Double noData = noData(fields, notices);
@@ -81,6 +83,29 @@ final class GeoTiffSource implements RasterSource {
             closeQuietly(reader, stream);
             throw new DemFormatException(tif, "not a readable TIFF (truncated or corrupt?): " + describe(e), e);
         }
+    }
+
+    /** TIFF compression codes TwelveMonkeys decodes for DEMs, with their names. */
+    private static final java.util.Map<Integer, String> DECODED_COMPRESSIONS = java.util.Map.of(
+            1, "none", 5, "LZW", 8, "Deflate", 32946, "Deflate", 32773, "PackBits", 6, "old-style JPEG",
+            7, "JPEG");
+
+    /** Refuses compressions we cannot decode before any pixel is read, naming the compression and a remedy. */
+    private static void checkCompression(Path tif, TiffFields fields) throws DemFormatException {
+        int code = fields.intValue(TiffFields.COMPRESSION, 1);
+        if (DECODED_COMPRESSIONS.containsKey(code)) {
+            return;
+        }
+        String name = switch (code) {
+            case 50000 -> "ZSTD";
+            case 34925 -> "LZMA";
+            case 50001 -> "WebP";
+            case 34887 -> "LERC";
+            default -> "code " + code;
+        };
+        throw new DemFormatException(tif, name + " compression (TIFF tag 259 = " + code + ") is not supported; "
+                + "supported: none, LZW, Deflate, PackBits, JPEG. Re-encode it, e.g. gdal_translate -co "
+                + "COMPRESS=DEFLATE -co PREDICTOR=2 in.tif out.tif");
     }
 
     @Override
@@ -280,7 +305,7 @@ final class GeoTiffSource implements RasterSource {
             originY = height;
         }
         PixelAnchor anchor = PixelAnchor.CORNER;
-        if (keys.code(GeoKeyDirectory.GT_RASTER_TYPE).orElse(1) == 2) {
+        if (keys.code(GeoKeys.GT_RASTER_TYPE).orElse(1) == 2) {
             // PixelIsPoint: the tie point names the centre of the cell; move to its outer corner.
             anchor = PixelAnchor.CENTER;
             originX -= cellW / 2;

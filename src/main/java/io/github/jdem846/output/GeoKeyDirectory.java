@@ -1,5 +1,7 @@
 package io.github.jdem846.output;
 
+import static io.github.jdem846.geo.GeoKeys.*;
+
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.Ellipsoid;
 import java.util.ArrayList;
@@ -23,33 +25,8 @@ import java.util.TreeMap;
  */
 record GeoKeyDirectory(char[] directory, double[] doubleParams, String asciiParams) {
 
-    static final int TAG_GEO_KEY_DIRECTORY = 34735;
-    static final int TAG_GEO_DOUBLE_PARAMS = 34736;
-    static final int TAG_GEO_ASCII_PARAMS = 34737;
 
-    static final int GT_MODEL_TYPE = 1024;
-    static final int GT_RASTER_TYPE = 1025;
-    static final int GT_CITATION = 1026;
-    static final int GEOGRAPHIC_TYPE = 2048;
-    static final int GEOG_CITATION = 2049;
-    static final int GEOG_GEODETIC_DATUM = 2050;
-    static final int GEOG_ANGULAR_UNITS = 2054;
-    static final int GEOG_ELLIPSOID = 2056;
-    static final int GEOG_SEMI_MAJOR_AXIS = 2057;
-    static final int GEOG_SEMI_MINOR_AXIS = 2058;
-    static final int GEOG_INV_FLATTENING = 2059;
-    static final int PROJECTED_CS_TYPE = 3072;
-    static final int PROJ_LINEAR_UNITS = 3076;
-    static final int PROJ_LINEAR_UNIT_SIZE = 3077;
 
-    static final int MODEL_TYPE_PROJECTED = 1;
-    static final int MODEL_TYPE_GEOGRAPHIC = 2;
-    static final int RASTER_PIXEL_IS_AREA = 1;
-    static final int USER_DEFINED = 32767;
-    static final int EPSG_METRE = 9001;
-    static final int EPSG_FOOT = 9002;
-    static final int EPSG_US_SURVEY_FOOT = 9003;
-    static final int EPSG_DEGREE = 9102;
 
     /** The keys describing {@code crs}. */
     static GeoKeyDirectory of(CrsInfo crs) {

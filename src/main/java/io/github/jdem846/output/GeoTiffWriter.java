@@ -1,5 +1,6 @@
 package io.github.jdem846.output;
 
+import io.github.jdem846.geo.GeoKeys;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -156,12 +157,12 @@ final class GeoTiffWriter {
             for (int i = 0; i < dir.length; i++) {
                 dir[i] = keys.directory()[i];
             }
-            f.put(GeoKeyDirectory.TAG_GEO_KEY_DIRECTORY, Field.shorts(dir));
+            f.put(GeoKeys.TAG_GEO_KEY_DIRECTORY, Field.shorts(dir));
             if (keys.doubleParams().length > 0) {
-                f.put(GeoKeyDirectory.TAG_GEO_DOUBLE_PARAMS, Field.doubles(keys.doubleParams()));
+                f.put(GeoKeys.TAG_GEO_DOUBLE_PARAMS, Field.doubles(keys.doubleParams()));
             }
             if (!keys.asciiParams().isEmpty()) {
-                f.put(GeoKeyDirectory.TAG_GEO_ASCII_PARAMS, Field.ascii(keys.asciiParams()));
+                f.put(GeoKeys.TAG_GEO_ASCII_PARAMS, Field.ascii(keys.asciiParams()));
             }
         }
         if (noData != null) {

@@ -13,7 +13,7 @@ import java.nio.file.Path;
  * Encodes 8-bit RGBA ({@code TYPE_INT_ARGB}) and 8-bit gray ({@code TYPE_BYTE_GRAY}) images as PNG with
  * {@link PngEncoder}: per-row PNG filters chosen by the encoder ("predictor encoding") and deflate split into
  * segments compressed in parallel. Measured against ImageIO's PNG writer in docs/performance.md ("PNG
- * encoding"): faster and smaller at every level tried.
+ * encoding"): at level 1 with predictor it writes 18–25 % smaller files than ImageIO's default, in less time.
  */
 final class PngWriter {
 

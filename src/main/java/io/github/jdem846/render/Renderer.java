@@ -57,7 +57,7 @@ public final class Renderer {
         int width = dem.width();
         int height = dem.height();
         TintFunction tint = scene.tint() == null ? elevation -> Float.isNaN(elevation) ? 0 : PLAIN_GRAY
-                : scene.tint().bind(dem.statistics());
+                : scene.tint().bind(scene.tintRange() != null ? scene.tintRange() : dem.statistics());
         float[] shadow = castShadows(dem, scene, pool, progress);
         IlluminationStage illumination = scene.hillshade() == null ? null
                 : scene.hillshade().stage(scene.hillshadeOptions());
@@ -81,6 +81,43 @@ public final class Renderer {
                     }
                 });
         return new RenderedImage(width, height, argb, dem.geometry());
+    }
+
+    /**
+     * The illumination layer alone (for single-band hillshade products): the cosine of incidence of every cell,
+     * NaN for no-data, computed tile by tile.
+     */
+    public float[] illumination(Dem dem, IlluminationStage stage, LightField light, RenderProgress progress)
+            throws InterruptedException {
+        int width = dem.width();
+        float[] out = new float[width * dem.height()];
+        ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
+        try {
+            new TileExecutor(pool, settings.tileSize()).forEachTile(width, dem.height(), "hillshade", progress,
+                    (col0, row0, w, h) -> {
+                        float[] tile = new float[w * h];
+                        illuminate(dem, stage, light, col0, row0, w, h, tile);
+                        for (int r = 0; r < h; r++) {
+                            System.arraycopy(tile, r * w, out, (row0 + r) * width + col0, w);
+                        }
+                    });
+        } finally {
+            pool.shutdownNow();
+        }
+        return out;
+    }
+
+    /**
+     * The cast-shadow layer alone: the shadowed fraction of every cell (0 = lit, 1 = shadow; no-data 0).
+     */
+    public float[] shadows(Dem dem, Scene scene, RenderProgress progress) throws InterruptedException {
+        ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
+        try {
+            float[] s = castShadows(dem, scene, pool, progress);
+            return s != null ? s : new float[dem.width() * dem.height()];
+        } finally {
+            pool.shutdownNow();
+        }
     }
 
     private static void illuminate(Dem dem, IlluminationStage stage, LightField light, int col0, int row0, int w,

@@ -2,6 +2,7 @@ package io.github.jdem846.render;
 
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.light.LightField;
+import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shade.HillshadeOptions;
 import io.github.jdem846.shadow.ShadowAlgorithm;
@@ -22,10 +23,12 @@ import java.util.Objects;
  * @param light            the light (uniform, or varying over the grid)
  * @param shadowIntensity  a cell in cast shadow loses 2 × this much brightness (original 0.4)
  * @param fade             extra darkening in [0, 2] for the whole scene, e.g. the twilight fade (0 in daylight)
+ * @param tintRange        the elevation range a percent tint is stretched over, or {@code null} for the rendered
+ *                         DEM's own range (give the whole file's range when rendering a window or a reduced copy)
  */
 public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions hillshadeOptions,
                     ShadowAlgorithm shadows, ShadowOptions shadowOptions, LightField light,
-                    double shadowIntensity, double fade) {
+                    double shadowIntensity, double fade, ElevationStatistics tintRange) {
 
     public Scene {
         Objects.requireNonNull(hillshadeOptions, "hillshadeOptions");
@@ -47,32 +50,32 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
     public static Scene defaults() {
         return new Scene(ColorRamp.defaultRamp(), HillshadeMethod.JDEM846, HillshadeOptions.DEFAULTS,
                 ShadowAlgorithm.NONE, ShadowOptions.DEFAULTS, LightField.uniform(LightDirection.ORIGINAL_DEFAULT),
-                Compositor.DEFAULT_SHADOW_INTENSITY, 0);
+                Compositor.DEFAULT_SHADOW_INTENSITY, 0, null);
     }
 
     /** The same scene with another tint ({@code null} = plain gray). */
     public Scene withTint(ColorRamp ramp) {
-        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade);
+        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange);
     }
 
     /** The same scene with another hillshade method ({@code null} = none). */
     public Scene withHillshade(HillshadeMethod method) {
-        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade);
+        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange);
     }
 
     /** The same scene with other hillshade options. */
     public Scene withHillshadeOptions(HillshadeOptions options) {
-        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade);
+        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange);
     }
 
     /** The same scene with another cast-shadow algorithm ({@code null} or NONE = none). */
     public Scene withShadows(ShadowAlgorithm algorithm) {
-        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade);
+        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange);
     }
 
     /** The same scene with other cast-shadow options. */
     public Scene withShadowOptions(ShadowOptions options) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange);
     }
 
     /** The same scene under one light direction. */
@@ -82,18 +85,24 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
 
     /** The same scene under a light that may vary over the grid. */
     public Scene withLight(LightField field) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange);
     }
 
     /** The same scene with another shadow intensity. */
     public Scene withShadowIntensity(double intensity) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange);
     }
 
     /** The same scene with a global darkening (twilight fade). */
     public Scene withFade(double darkening) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity,
-                darkening);
+                darkening, tintRange);
+    }
+
+    /** The same scene with a fixed range for percent tints ({@code null} = the rendered DEM's own range). */
+    public Scene withTintRange(ElevationStatistics range) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
+                range);
     }
 
     /** True when cast shadows are to be computed. */

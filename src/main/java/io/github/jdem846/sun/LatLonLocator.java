@@ -30,6 +30,26 @@ public interface LatLonLocator {
         return (col, row) -> new double[] {grid.centerY(row), grid.centerX(col)};
     }
 
+    /**
+     * The locator of any grid whose CRS can be turned into latitude/longitude ({@link GridGeometry#geoLocator()}:
+     * geographic grids directly, projected ones through Apache SIS).
+     *
+     * @throws IllegalArgumentException when the CRS is unknown or cannot be inverted offline
+     */
+    static LatLonLocator forGrid(GridGeometry grid) {
+        Objects.requireNonNull(grid, "grid");
+        if (grid.crs().isGeographic()) {
+            return geographic(grid);
+        }
+        io.github.jdem846.geo.GeoLocator geo = grid.geoLocator().orElseThrow(() -> new IllegalArgumentException(
+                "the grid's CRS (" + (grid.crs().name() != null ? grid.crs().name() : "unknown")
+                        + ") cannot be turned into latitude/longitude here; give the place with --sun-at LAT,LON"));
+        return (col, row) -> {
+            io.github.jdem846.geo.LatLon p = geo.toLatLon(grid.centerX(col), grid.centerY(row));
+            return new double[] {p.latitude(), p.longitude()};
+        };
+    }
+
     /** Adapts a function {@code (col, row) → {lat, lon}} (e.g. a reader's inverse projection). */
     static LatLonLocator of(BiFunction<Double, Double, double[]> function) {
         Objects.requireNonNull(function, "function");

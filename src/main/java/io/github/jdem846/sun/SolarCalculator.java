@@ -1,5 +1,6 @@
 package io.github.jdem846.sun;
 
+import io.github.jdem846.geo.LatLon;
 import java.time.ZoneOffset;
 import java.time.ZonedDateTime;
 import java.util.Objects;

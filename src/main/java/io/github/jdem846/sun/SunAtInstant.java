@@ -1,5 +1,6 @@
 package io.github.jdem846.sun;
 
+import io.github.jdem846.geo.LatLon;
 import java.time.ZoneOffset;
 import java.time.ZonedDateTime;
 import java.util.Objects;
@@ -70,7 +71,7 @@ public final class SunAtInstant {
      *                                  [−180, 180] (wrap grid longitudes with {@link LatLon#wrapLongitude})
      */
     public SunPosition position(double latitude, double longitude) {
-        new LatLon(latitude, longitude); // validates with a message for a person
+        LatLon.validated(latitude, longitude); // a message for a person when out of range
         SolarPosition p = SPA.calculateSolarPositionWithTimeDependentParts(latitude, longitude,
                 observer.heightMeters(), observer.pressureMillibars(), observer.temperatureCelsius(), parts);
         return new SunPosition(p.azimuth(), Math.max(0, Math.min(180, p.zenithAngle())));

@@ -1,5 +1,6 @@
 package io.github.jdem846.sun;
 
+import io.github.jdem846.geo.LatLon;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.GridGeometry;
 import java.time.ZonedDateTime;

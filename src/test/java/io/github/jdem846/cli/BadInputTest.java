@@ -136,6 +136,12 @@ class BadInputTest {
     }
 
     @Test
+    void unsupportedCompressionIsNamedWithARemedy() {
+        assertRefused(Path.of("testdata/formats/volcano_zstd.tif"), "ZSTD compression", "not supported",
+                "COMPRESS=DEFLATE");
+    }
+
+    @Test
     void rotatedGrid() {
         assertRefused(Path.of("testdata/formats/volcano_rotated.tif"), "rotated or sheared");
     }

@@ -1,5 +1,6 @@
 package io.github.jdem846.output;
 
+import io.github.jdem846.geo.GeoKeys;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -67,10 +68,10 @@ class GeoTiffOutputTest {
                 1e-9);
         assertArrayEquals(new double[]{0, 0, 0, 376313.6554542635, 3788627.8276283755 + 643 * 30, 0},
                 tags.numbers(MODEL_TIEPOINT), 1e-6);
-        assertEquals(1, tags.geoKey(GeoKeyDirectory.GT_MODEL_TYPE)); // projected
-        assertEquals(1, tags.geoKey(GeoKeyDirectory.GT_RASTER_TYPE)); // PixelIsArea
-        assertEquals(32611, tags.geoKey(GeoKeyDirectory.PROJECTED_CS_TYPE));
-        assertEquals(9001, tags.geoKey(GeoKeyDirectory.PROJ_LINEAR_UNITS)); // metre
+        assertEquals(1, tags.geoKey(GeoKeys.GT_MODEL_TYPE)); // projected
+        assertEquals(1, tags.geoKey(GeoKeys.GT_RASTER_TYPE)); // PixelIsArea
+        assertEquals(32611, tags.geoKey(GeoKeys.PROJECTED_CS_TYPE));
+        assertEquals(9001, tags.geoKey(GeoKeys.PROJ_LINEAR_UNITS)); // metre
         assertEquals("0", tags.text(GDAL_NODATA));
     }
 
@@ -105,9 +106,9 @@ class GeoTiffOutputTest {
         assertEquals(8, tags.number(COMPRESSION));
         assertArrayEquals(new double[]{(-84.07791666666667 + 84.41375) / w, (36.73291666666667 - 36.44625) / h, 0},
                 tags.numbers(MODEL_PIXEL_SCALE), 1e-15);
-        assertEquals(2, tags.geoKey(GeoKeyDirectory.GT_MODEL_TYPE)); // geographic
-        assertEquals(4326, tags.geoKey(GeoKeyDirectory.GEOGRAPHIC_TYPE));
-        assertEquals(9102, tags.geoKey(GeoKeyDirectory.GEOG_ANGULAR_UNITS)); // degree
+        assertEquals(2, tags.geoKey(GeoKeys.GT_MODEL_TYPE)); // geographic
+        assertEquals(4326, tags.geoKey(GeoKeys.GEOGRAPHIC_TYPE));
+        assertEquals(9102, tags.geoKey(GeoKeys.GEOG_ANGULAR_UNITS)); // degree
         assertEquals("nan", tags.text(GDAL_NODATA));
     }
 
@@ -128,7 +129,7 @@ class GeoTiffOutputTest {
         assertEquals(2, tags.number(EXTRA_SAMPLES)); // unassociated alpha
         assertEquals(2, tags.number(PHOTOMETRIC)); // RGB
         assertFalse(tags.has(MODEL_PIXEL_SCALE), "no georeferencing was given");
-        assertFalse(tags.has(GeoKeyDirectory.TAG_GEO_KEY_DIRECTORY));
+        assertFalse(tags.has(GeoKeys.TAG_GEO_KEY_DIRECTORY));
     }
 
     @ParameterizedTest(name = "{0}×{1}")
@@ -146,8 +147,8 @@ class GeoTiffOutputTest {
         }
         TiffTags tags = TiffTags.read(file);
         assertArrayEquals(new double[]{5.0 / width, 10.0 / height, 0}, tags.numbers(MODEL_PIXEL_SCALE), 1e-12);
-        assertEquals(1, tags.geoKey(GeoKeyDirectory.GT_RASTER_TYPE));
-        assertEquals(1, tags.numbers(GeoKeyDirectory.TAG_GEO_KEY_DIRECTORY)[3], "only the raster type key");
+        assertEquals(1, tags.geoKey(GeoKeys.GT_RASTER_TYPE));
+        assertEquals(1, tags.numbers(GeoKeys.TAG_GEO_KEY_DIRECTORY)[3], "only the raster type key");
         assertFalse(tags.has(GDAL_NODATA));
     }
 
@@ -158,9 +159,9 @@ class GeoTiffOutputTest {
         WriteResult result = ImageOutput.writeGray(file, new byte[6], 3, 2, geo, WriteOptions.defaults());
         assertTrue(result.notices().get(0).contains("without an EPSG code"), result.notices().toString());
         TiffTags tags = TiffTags.read(file);
-        assertEquals(32767, tags.geoKey(GeoKeyDirectory.PROJECTED_CS_TYPE));
-        assertEquals(9002, tags.geoKey(GeoKeyDirectory.PROJ_LINEAR_UNITS));
-        assertEquals("Local grid|", tags.text(GeoKeyDirectory.TAG_GEO_ASCII_PARAMS));
+        assertEquals(32767, tags.geoKey(GeoKeys.PROJECTED_CS_TYPE));
+        assertEquals(9002, tags.geoKey(GeoKeys.PROJ_LINEAR_UNITS));
+        assertEquals("Local grid|", tags.text(GeoKeys.TAG_GEO_ASCII_PARAMS));
     }
 
     /** Noise does not compress: Deflate output is larger than the strip (the JDK TIFF writer truncates it). */

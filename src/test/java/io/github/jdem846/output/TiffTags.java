@@ -1,5 +1,6 @@
 package io.github.jdem846.output;
 
+import io.github.jdem846.geo.GeoKeys;
 import com.twelvemonkeys.imageio.metadata.Directory;
 import com.twelvemonkeys.imageio.metadata.Entry;
 import com.twelvemonkeys.imageio.metadata.tiff.TIFFReader;
@@ -70,7 +71,7 @@ final class TiffTags {
 
     /** The value of GeoKey {@code key} stored in the directory itself (location 0). */
     int geoKey(int key) {
-        double[] d = numbers(GeoKeyDirectory.TAG_GEO_KEY_DIRECTORY);
+        double[] d = numbers(GeoKeys.TAG_GEO_KEY_DIRECTORY);
         for (int k = 0; k < d[3]; k++) {
             int at = 4 + 4 * k;
             if (d[at] == key) {

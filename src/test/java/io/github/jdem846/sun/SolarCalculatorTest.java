@@ -1,5 +1,6 @@
 package io.github.jdem846.sun;
 
+import io.github.jdem846.geo.LatLon;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;

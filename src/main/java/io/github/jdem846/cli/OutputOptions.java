@@ -1,0 +1,60 @@
+package io.github.jdem846.cli;
+
+import io.github.jdem846.output.GeoReference;
+import io.github.jdem846.output.ImageOutput;
+import io.github.jdem846.output.WriteOptions;
+import io.github.jdem846.output.WriteResult;
+import io.github.jdem846.raster.GridGeometry;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import picocli.CommandLine.Option;
+
+/** {@code -o OUT} and {@code --world-file}: where and how the picture is written (atomically). */
+public final class OutputOptions {
+
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT",
+            description = "The image to write: .png, or .tif/.tiff for a GeoTIFF. Written to a temporary file "
+                    + "first and moved into place, so a failure leaves nothing behind.")
+    Path output;
+
+    @Option(names = "--world-file",
+            description = "Also write a world file (.pgw/.tfw), a .prj and a GDAL .aux.xml so GIS software "
+                    + "places the image (a GeoTIFF carries its georeferencing anyway).")
+    boolean worldFile;
+
+    @Option(names = {"-q", "--quiet"}, description = "No progress bar.")
+    boolean quiet;
+
+    private WriteOptions options(Double noData) {
+        WriteOptions o = WriteOptions.defaults()
+                .withSidecars(worldFile ? WriteOptions.Sidecars.ALWAYS : WriteOptions.Sidecars.NONE);
+        return noData == null ? o : o.withNoData(noData);
+    }
+
+    /** Writes RGBA pixels covering {@code geometry}. */
+    void writeRgba(int[] argb, GridGeometry geometry, PrintWriter err) throws IOException {
+        WriteResult r = ImageOutput.writeRgba(output, argb, geometry.width(), geometry.height(),
+                GeoReference.of(geometry), options(null));
+        report(r, err);
+    }
+
+    /** Writes a gray image covering {@code geometry}, with {@code noData} (or null) as the GeoTIFF no-data. */
+    void writeGray(byte[] gray, GridGeometry geometry, Double noData, PrintWriter err) throws IOException {
+        WriteResult r = ImageOutput.writeGray(output, gray, geometry.width(), geometry.height(),
+                GeoReference.of(geometry), options(noData));
+        report(r, err);
+    }
+
+    private static void report(WriteResult r, PrintWriter err) {
+        for (String notice : r.notices()) {
+            err.println("jdem846: note: " + notice);
+        }
+        err.flush();
+    }
+
+    /** The output path. */
+    Path path() {
+        return output;
+    }
+}

@@ -1,0 +1,92 @@
+package io.github.jdem846.cli;
+
+import io.github.jdem846.render.DemLoader;
+import io.github.jdem846.render.RenderedImage;
+import io.github.jdem846.render.Renderer;
+import io.github.jdem846.render.Scene;
+import io.github.jdem846.shade.HillshadeMethod;
+import io.github.jdem846.shadow.ShadowAlgorithm;
+import java.io.PrintWriter;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code jdem846 render [FILE] -o OUT.png}: the main job — hypsometric tint, hillshade and (optionally) ray-traced
+ * cast shadows composed into one RGBA picture.
+ */
+@Command(name = "render", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+        sortOptions = false,
+        description = "Render a shaded-relief picture: tint × hillshade × cast shadows (the article's method).",
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:written", "1:an input could not be read or the output not written", "2:bad usage"})
+public final class RenderCommand implements Callable<Integer> {
+
+    @Mixin
+    InputOptions input;
+
+    @Mixin
+    OutputOptions output;
+
+    @Mixin
+    TintOptions tint;
+
+    @Option(names = "--hillshade", paramLabel = "METHOD", defaultValue = "jdem846",
+            description = "jdem846 (the article's, default), horn, multidirectional or none.")
+    String hillshade;
+
+    @Mixin
+    ShadingOptions shading;
+
+    @Option(names = "--shadows", paramLabel = "ALGORITHM", defaultValue = "none",
+            description = "Cast shadows: none (default), sweep (fast, O(cells)), march (the article's ray march, "
+                    + "fixed) or exact (the slow reference).")
+    String shadows;
+
+    @Option(names = "--shadow-intensity", paramLabel = "0..1", defaultValue = "0.4",
+            description = "A cell in cast shadow loses 2 × this much brightness. Default: ${DEFAULT-VALUE}.")
+    double shadowIntensity;
+
+    @Mixin
+    ShadowCliOptions shadowOptions;
+
+    @Mixin
+    SunOptions sun;
+
+    @Mixin
+    ExecutionOptions execution;
+
+    @Mixin
+    VerboseOption verbose;
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter err = spec.commandLine().getErr();
+        HillshadeMethod method = hillshade.toLowerCase(Locale.ROOT).equals("none") ? null
+                : HillshadeMethod.fromName(hillshade);
+        ShadowAlgorithm algorithm = ShadowAlgorithm.parse(shadows);
+        Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(method)
+                .withHillshadeOptions(shading.options()).withShadows(algorithm)
+                .withShadowOptions(shadowOptions.options()).withShadowIntensity(shadowIntensity);
+        DemLoader.Halo halo = method == null ? DemLoader.Halo.NONE : DemLoader.Halo.uniform(1);
+        if (scene.hasShadows()) {
+            halo = halo.union(CommandSupport.shadowHalo(sun, scene.shadowOptions(), err));
+        }
+        DemLoader.Loaded loaded = input.load(halo, scene.tint() != null);
+        CommandSupport.printNotices(loaded, err);
+        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), execution.tileSize, err);
+        scene = scene.withLight(lighting.field()).withFade(lighting.fade()).withTintRange(loaded.fileStatistics());
+        RenderedImage image;
+        try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
+            image = new Renderer(execution.settings()).render(loaded.dem(), scene, progress);
+        }
+        output.writeRgba(loaded.crop(image.argb()), CommandSupport.outputGeometry(loaded), err);
+        return 0;
+    }
+}

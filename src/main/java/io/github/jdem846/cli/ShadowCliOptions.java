@@ -1,0 +1,26 @@
+package io.github.jdem846.cli;
+
+import io.github.jdem846.shadow.ShadowOptions;
+import picocli.CommandLine.Option;
+
+/** {@code --soft-shadows}, {@code --curvature} and {@code --refraction}. */
+public final class ShadowCliOptions {
+
+    @Option(names = "--soft-shadows",
+            description = "The sun as a 0.53° disk: cells get the shadowed fraction of the disk (penumbrae).")
+    boolean soft;
+
+    @Option(names = "--curvature",
+            description = "Account for the Earth's curvature and refraction along the rays (matters beyond ~10 km).")
+    boolean curvature;
+
+    @Option(names = "--refraction", paramLabel = "K", defaultValue = "0.13",
+            description = "Refraction coefficient for --curvature. Default: ${DEFAULT-VALUE}.")
+    double refraction;
+
+    /** The options record (sweep/march defaults otherwise). */
+    ShadowOptions options() {
+        ShadowOptions o = ShadowOptions.DEFAULTS.withSoftShadows(soft);
+        return curvature ? o.withEarthCurvature(true, refraction, Double.NaN) : o;
+    }
+}

@@ -1,0 +1,75 @@
+package io.github.jdem846.cli;
+
+import io.github.jdem846.render.DemLoader;
+import io.github.jdem846.render.Renderer;
+import io.github.jdem846.render.Scene;
+import io.github.jdem846.shadow.ShadowAlgorithm;
+import java.io.PrintWriter;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code jdem846 shadows FILE -o MASK.png|MASK.tif}: the cast-shadow mask, 8-bit, 0 = lit, 255 = in shadow (soft
+ * shadows: 0–255 = shadowed fraction), row 0 = north, no-data cells 0.
+ */
+@Command(name = "shadows", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+        sortOptions = false,
+        description = "Write the ray-traced cast-shadow mask: 0 = lit, 255 = in shadow (soft: shadowed fraction).",
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:written", "1:an input could not be read or the output not written", "2:bad usage"})
+public final class ShadowsCommand implements Callable<Integer> {
+
+    @Mixin
+    InputOptions input;
+
+    @Mixin
+    OutputOptions output;
+
+    @Option(names = {"--algorithm", "--shadows"}, paramLabel = "ALGORITHM", defaultValue = "sweep",
+            description = "sweep (default, O(cells)), march (the article's ray march, fixed) or exact (reference).")
+    String algorithm;
+
+    @Mixin
+    ShadowCliOptions shadowOptions;
+
+    @Mixin
+    SunOptions sun;
+
+    @Mixin
+    ExecutionOptions execution;
+
+    @Mixin
+    VerboseOption verbose;
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter err = spec.commandLine().getErr();
+        ShadowAlgorithm alg = ShadowAlgorithm.parse(algorithm);
+        if (alg == ShadowAlgorithm.NONE) {
+            throw new IllegalArgumentException("--algorithm none makes no mask; choose sweep, march or exact");
+        }
+        Scene scene = Scene.defaults().withTint(null).withHillshade(null).withShadows(alg)
+                .withShadowOptions(shadowOptions.options());
+        DemLoader.Loaded loaded = input.load(CommandSupport.shadowHalo(sun, scene.shadowOptions(), err), false);
+        CommandSupport.printNotices(loaded, err);
+        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), execution.tileSize, err);
+        float[] mask;
+        try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
+            mask = new Renderer(execution.settings()).shadows(loaded.dem(), scene.withLight(lighting.field()),
+                    progress);
+        }
+        float[] window = loaded.crop(mask);
+        byte[] bytes = new byte[window.length];
+        for (int i = 0; i < window.length; i++) {
+            bytes[i] = (byte) Math.round(Math.max(0, Math.min(1, window[i])) * 255f);
+        }
+        output.writeGray(bytes, CommandSupport.outputGeometry(loaded), null, err);
+        return 0;
+    }
+}

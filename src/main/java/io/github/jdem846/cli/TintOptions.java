@@ -1,0 +1,51 @@
+package io.github.jdem846.cli;
+
+import io.github.jdem846.tint.ColorRamp;
+import io.github.jdem846.tint.ColorSelection;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import picocli.CommandLine.Option;
+
+/** {@code --tint NAME|FILE} with gdaldem's {@code --exact-color}/{@code --nearest-color}. */
+public final class TintOptions {
+
+    @Option(names = "--tint", paramLabel = "NAME|FILE", defaultValue = ColorRamp.DEFAULT_NAME,
+            description = "Colour ramp: a built-in name (hypsometric, hypsometric-natural, bathymetric, etopo1, "
+                    + "standard, gray, …), a gdaldem colour file, or 'none'. Default: ${DEFAULT-VALUE}.")
+    String tint;
+
+    @Option(names = {"--exact-color", "--exact_color_entry"},
+            description = "Colour file: only values equal to an entry get its colour (gdaldem -exact_color_entry).")
+    boolean exact;
+
+    @Option(names = {"--nearest-color", "--nearest_color_entry"},
+            description = "Colour file: the nearest entry's colour, no interpolation (gdaldem -nearest_color_entry).")
+    boolean nearest;
+
+    /** The ramp, or {@code null} for 'none'. */
+    ColorRamp ramp() throws IOException {
+        if (exact && nearest) {
+            throw new IllegalArgumentException("give --exact-color or --nearest-color, not both");
+        }
+        if (tint.toLowerCase(Locale.ROOT).equals("none")) {
+            return null;
+        }
+        Path file = Path.of(tint);
+        if (Files.isRegularFile(file)) {
+            ColorSelection mode = exact ? ColorSelection.EXACT : nearest ? ColorSelection.NEAREST
+                    : ColorSelection.INTERPOLATE;
+            return ColorRamp.fromGdalColorFile(file, mode);
+        }
+        if (exact || nearest) {
+            throw new IllegalArgumentException("--exact-color and --nearest-color apply to colour files; '" + tint
+                    + "' is not a file");
+        }
+        if (tint.contains("/") || tint.contains("\\") || tint.contains(".")) {
+            throw new IllegalArgumentException("colour file '" + tint + "' does not exist (built-in ramps: "
+                    + String.join(", ", ColorRamp.names()) + ")");
+        }
+        return ColorRamp.named(tint);
+    }
+}

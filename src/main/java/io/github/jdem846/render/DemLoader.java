@@ -1,0 +1,172 @@
+package io.github.jdem846.render;
+
+import io.github.jdem846.io.DemInfo;
+import io.github.jdem846.io.DemReader;
+import io.github.jdem846.io.LoadedDem;
+import io.github.jdem846.io.ReadRequest;
+import io.github.jdem846.io.Window;
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.DemResampler;
+import io.github.jdem846.raster.ElevationStatistics;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Objects;
+
+/**
+ * Reads exactly the part of a DEM file a picture needs: the window (or the whole grid) plus a halo of cells that
+ * the stages read around it, at the output resolution. Shrinking reads a decimated grid (box average, only the
+ * blocks needed are decoded) and finishes with an area-weighted resample to the exact size, so no stage ever runs
+ * at full resolution for a smaller picture.
+ */
+public final class DemLoader {
+
+    /** Cells of halo a stage needs around the output window, in DEM cells. */
+    @FunctionalInterface
+    public interface Halo {
+        /**
+         * The halo in source cells on each side: {west, north, east, south}.
+         *
+         * @param file   the file being read (e.g. to stream its statistics)
+         * @param info   the file's header
+         * @param window the cells of the output window
+         */
+        int[] cells(Path file, DemInfo info, Window.Cells window) throws IOException;
+
+        /** No halo. */
+        Halo NONE = (file, info, window) -> new int[4];
+
+        /** The same number of cells on every side. */
+        static Halo uniform(int cells) {
+            return (file, info, window) -> new int[] {cells, cells, cells, cells};
+        }
+
+        /**
+         * The halo a windowed render with cast shadows must read toward the sun ({@link
+         * io.github.jdem846.shadow.ShadowHalo}); the file's maximum is streamed once, only when a window is given.
+         */
+        static Halo shadows(io.github.jdem846.light.LightDirection light,
+                            io.github.jdem846.shadow.ShadowOptions options) {
+            return ShadowHaloSource.of(light, options);
+        }
+
+        /** The larger of this halo and {@code other} on each side. */
+        default Halo union(Halo other) {
+            return (file, info, window) -> {
+                int[] a = cells(file, info, window);
+                int[] b = other.cells(file, info, window);
+                return new int[] {Math.max(a[0], b[0]), Math.max(a[1], b[1]), Math.max(a[2], b[2]),
+                    Math.max(a[3], b[3])};
+            };
+        }
+    }
+
+    /**
+     * The loaded grid with its halo, and where the output window sits inside it.
+     *
+     * @param info    the file's header
+     * @param dem     the grid at output resolution, halo included
+     * @param col     first column of the output window within {@code dem}
+     * @param row     first row of the output window within {@code dem}
+     * @param width   output width in pixels
+     * @param height  output height in pixels
+     * @param fileStatistics elevation range of the whole file at full resolution (so that percent tints of a
+     *                       window or a reduced picture match the full picture), or {@code null} when not asked for
+     */
+    public record Loaded(DemInfo info, Dem dem, int col, int row, int width, int height,
+                         ElevationStatistics fileStatistics) {
+
+        /** True when the grid holds nothing but the output window. */
+        public boolean hasNoHalo() {
+            return col == 0 && row == 0 && width == dem.width() && height == dem.height();
+        }
+
+        /** The output window cut out of {@code pixels} (row length {@code dem.width()}). */
+        public int[] crop(int[] pixels) {
+            if (hasNoHalo()) {
+                return pixels;
+            }
+            int[] out = new int[width * height];
+            for (int r = 0; r < height; r++) {
+                System.arraycopy(pixels, (row + r) * dem.width() + col, out, r * width, width);
+            }
+            return out;
+        }
+
+        /** The output window cut out of {@code values} (row length {@code dem.width()}). */
+        public float[] crop(float[] values) {
+            if (hasNoHalo()) {
+                return values;
+            }
+            float[] out = new float[width * height];
+            for (int r = 0; r < height; r++) {
+                System.arraycopy(values, (row + r) * dem.width() + col, out, r * width, width);
+            }
+            return out;
+        }
+
+        /** The output window of the grid itself. */
+        public Dem windowDem() {
+            return hasNoHalo() ? dem : dem.crop(col, row, width, height);
+        }
+    }
+
+    private DemLoader() {
+    }
+
+    /**
+     * Loads {@code file} for a picture of {@code window} (null = the whole grid) at {@code size}, with {@code halo}.
+     *
+     * @param fileStatistics also give the whole file's elevation range (streamed, without holding the grid, and
+     *                       only when the loaded grid is not the whole file at full resolution)
+     */
+    public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics)
+            throws IOException {
+        Objects.requireNonNull(size, "size");
+        Objects.requireNonNull(halo, "halo");
+        DemInfo info = DemReader.inspect(file);
+        Window.Cells win = window == null ? Window.cells(0, 0, info.width(), info.height())
+                : window.resolve(info.geometry());
+        int[] px = size.pixelsFor(win.width(), win.height());
+        double fx = (double) win.width() / px[0];
+        double fy = (double) win.height() / px[1];
+        int[] h = halo.cells(file, info, win);
+        // Halo in source cells, rounded up to whole output pixels so the window keeps pixel-aligned edges.
+        int west = haloCells(h[0], fx, win.col());
+        int north = haloCells(h[1], fy, win.row());
+        int east = haloCells(h[2], fx, info.width() - win.col() - win.width());
+        int south = haloCells(h[3], fy, info.height() - win.row() - win.height());
+        Window.Cells read = Window.cells(win.col() - west, win.row() - north, win.width() + west + east,
+                win.height() + north + south);
+        int decimation = (int) Math.max(1, Math.floor(Math.min(fx, fy) + 1e-9));
+        LoadedDem loaded = DemReader.load(file, new ReadRequest(read, decimation));
+        int outW = (int) Math.max(1, Math.round(read.width() / fx));
+        int outH = (int) Math.max(1, Math.round(read.height() / fy));
+        Dem dem = DemResampler.resample(loaded.dem(), outW, outH);
+        int col = (int) Math.round(west / fx);
+        int row = (int) Math.round(north / fy);
+        int w = Math.min(px[0], outW - col);
+        int hgt = Math.min(px[1], outH - row);
+        ElevationStatistics stats = null;
+        if (fileStatistics) {
+            boolean whole = read.width() == info.width() && read.height() == info.height()
+                    && dem.width() == info.width() && dem.height() == info.height();
+            stats = whole ? dem.statistics() : DemReader.statistics(file);
+        }
+        return new Loaded(loaded.info(), dem, col, row, w, hgt, stats);
+    }
+
+    /** Halo cells on one side: whole output pixels' worth, at most what the grid has on that side. */
+    private static int haloCells(int cells, double factor, int available) {
+        if (cells <= 0 || available <= 0) {
+            return 0;
+        }
+        long pixels = (long) Math.ceil(cells / factor);
+        long source = (long) Math.ceil(pixels * factor);
+        // keep whole pixels: step down by whole pixels when the grid edge is nearer
+        while (source > available && pixels > 0) {
+            pixels--;
+            source = (long) Math.round(pixels * factor);
+        }
+        return (int) Math.max(0, Math.min(available, source));
+    }
+}
