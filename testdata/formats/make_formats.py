@@ -52,6 +52,11 @@ write_like(VOLCANO, "volcano_float64_times1.5.tif", [v.astype(np.float64) * 1.5]
            options=["TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16", "COMPRESS=LZW", "PREDICTOR=3"])
 write_like(VOLCANO, "volcano_2bands.tif", [v.astype(np.int16), np.zeros_like(v, dtype=np.int16)],
            gdal.GDT_Int16)
+write_like(VOLCANO, "volcano_2bands_planar_tile16.tif", [v.astype(np.int16), np.full_like(v, -7, dtype=np.int16)],
+           gdal.GDT_Int16, options=["INTERLEAVE=BAND", "TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16",
+                                    "COMPRESS=DEFLATE"])
+write_like(VOLCANO, "volcano_uint8_jpeg_q95.tif", [v.astype(np.uint8)], gdal.GDT_Byte,
+           options=["COMPRESS=JPEG", "JPEG_QUALITY=95", "TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16"])
 write_like(VOLCANO, "volcano_cint16.tif", [v.astype(np.int16)], gdal.GDT_CInt16)
 write_like(VOLCANO, "volcano_rotated.tif", [v.astype(np.int16)], gdal.GDT_Int16,
            geotransform=(1756944.0, 9.96194698, 0.87155743, 5917994.0, 0.87155743, -9.96194698))

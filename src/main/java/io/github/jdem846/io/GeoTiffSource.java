@@ -10,7 +10,11 @@ import java.awt.Rectangle;
 import java.awt.image.DataBuffer;
 import java.awt.image.Raster;
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.channels.FileChannel;
 import java.nio.file.Files;
+import java.nio.file.StandardOpenOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -24,9 +28,13 @@ import javax.imageio.stream.ImageInputStream;
 /**
  * GeoTIFF: pixels decoded by TwelveMonkeys imageio-tiff (its reader SPI is instantiated directly, not looked up in
  * the global ImageIO registry), georeferencing from ModelPixelScale + ModelTiepoint or ModelTransformation, CRS from
- * the GeoKeys ({@link GeoTiffCrs}), no-data from GDAL_NODATA. Rotated or sheared grids are refused. Rows are read
- * through {@link ImageReadParam#setSourceRegion}, so only the strips (or, for tiled files, the rows of tiles) of a
- * window are decoded.
+ * the GeoKeys ({@link GeoTiffCrs}), no-data from GDAL_NODATA. Rotated or sheared grids are refused.
+ *
+ * <p>Windows: TwelveMonkeys 3.15.0 decodes every strip and tile above the last row of a source region (and fails on
+ * regions narrower than a tiled image, haraldk/TwelveMonkeys#746). So for the usual compressions (none, LZW,
+ * Deflate, PackBits) each read hands TwelveMonkeys a synthetic image directory that lists only the strips or tiles
+ * covering the rows and columns asked for ({@link TiffSubset}); only those are decoded. Other compressions (JPEG)
+ * are read through full-width source regions in large bands.
  */
 final class GeoTiffSource implements RasterSource {
 
@@ -36,15 +44,19 @@ final class GeoTiffSource implements RasterSource {
     private final DemInfo info;
     private final int rowBlock;
     private final boolean tiled;
+    private final TiffSubset.Layout layout; // null: no subsetting, use source regions
+    private final FileChannel channel;
 
     private GeoTiffSource(Path file, ImageInputStream stream, ImageReader reader, DemInfo info, int rowBlock,
-                          boolean tiled) {
+                          boolean tiled, TiffSubset.Layout layout, FileChannel channel) {
         this.file = file;
         this.stream = stream;
         this.reader = reader;
         this.info = info;
         this.rowBlock = rowBlock;
         this.tiled = tiled;
+        this.layout = layout;
+        this.channel = channel;
     }
 
     static RasterSource open(Path tif) throws IOException {
@@ -75,7 +87,9 @@ final class GeoTiffSource implements RasterSource {
             int rowBlock = tiled ? fields.intValue(TiffFields.TILE_LENGTH, 1)
                     : Math.max(1, Math.min(height, fields.intValue(TiffFields.ROWS_PER_STRIP, height)));
             DemInfo info = new DemInfo(tif.toString(), DemFormat.GEOTIFF, type, bands, geometry, noData, notices);
-            return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled);
+            FileChannel channel = FileChannel.open(tif, StandardOpenOption.READ);
+            TiffSubset.Layout layout = layoutOf(fields, width, height, tiled, rowBlock, byteOrder(channel));
+            return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled, layout, channel);
         } catch (DemFormatException e) {
             closeQuietly(reader, stream);
             throw e;
@@ -119,17 +133,24 @@ final class GeoTiffSource implements RasterSource {
     }
 
     /**
-     * Large bands: TwelveMonkeys 3.15.0 walks every strip or tile of the file on each read, creating a decompressor
-     * for each, even those outside the source region, so each call costs time in proportion to the whole file.
-     * Up to 32 M cells per call (less on small heaps: 1/64 of the maximum heap, at least 4 M cells).
+     * About 4 M cells per read with subsetting. Without it, large bands: TwelveMonkeys decodes every strip or
+     * tile from the top of the image on each read, so each call costs time in proportion to the rows above it; up
+     * to 32 M cells per call (less on small heaps: 1/64 of the maximum heap, at least 4 M cells).
      */
     @Override
     public long bandCells() {
+        if (layout != null) {
+            return 1L << 22;
+        }
         return Math.max(1L << 22, Math.min(1L << 25, Runtime.getRuntime().maxMemory() / 64));
     }
 
     @Override
     public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
+        if (layout != null) {
+            readSubset(col, row, width, rows, dst);
+            return;
+        }
         ImageReadParam param = reader.getDefaultReadParam();
         // TwelveMonkeys 3.15.0 fails on tiled images when the source region is narrower than the image
         // (haraldk/TwelveMonkeys#746), so tiled files are read in full-width row bands and cropped here.
@@ -147,16 +168,75 @@ final class GeoTiffSource implements RasterSource {
             throw new DemFormatException(file, "the TIFF decoder returned " + raster.getWidth() + "×"
                     + raster.getHeight() + " cells for a " + readWidth + "×" + rows + " region");
         }
-        copyBand0(raster, col - readCol, width, rows, dst);
+        copyBand0(raster, col - readCol, 0, width, rows, dst);
+    }
+
+    /** Decodes only the strips or tiles covering the cells, through a synthetic directory. */
+    private void readSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
+        TiffSubset.Subset subset = TiffSubset.of(layout, col, row, width, rows);
+        Raster raster;
+        ImageReader r = new TIFFImageReaderSpi().createReaderInstance();
+        try (ImageInputStream in = new SplicedImageInputStream(subset.head(), subset.shift(), channel)) {
+            r.setInput(in, true, true);
+            raster = r.readRaster(0, null);
+        } catch (IOException | RuntimeException e) {
+            throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                    + " (truncated or corrupt TIFF?): " + describe(e), e);
+        } finally {
+            r.dispose();
+        }
+        if (raster.getWidth() < subset.width() || raster.getHeight() < subset.height()) {
+            throw new DemFormatException(file, "the TIFF decoder returned " + raster.getWidth() + "×"
+                    + raster.getHeight() + " cells for " + subset.width() + "×" + subset.height());
+        }
+        copyBand0(raster, col - subset.x0(), row - subset.y0(), width, rows, dst);
     }
 
     /**
-     * Columns {@code [skip, skip+width)} of band 0 of the raster as float32, undoing Java's lack of signed bytes
-     * and unsigned ints.
+     * The layout for {@link TiffSubset}, or null when the compression needs more than the strip or tile bytes
+     * (JPEG tables) and subsetting is not attempted.
      */
-    private void copyBand0(Raster raster, int skip, int width, int rows, float[] dst) {
-        int x0 = raster.getMinX() + skip;
-        int y0 = raster.getMinY();
+    private static TiffSubset.Layout layoutOf(TiffFields f, int width, int height, boolean tiled, int rowBlock,
+                                              ByteOrder order) {
+        int compression = f.intValue(TiffFields.COMPRESSION, 1);
+        if (compression != 1 && compression != 5 && compression != 8 && compression != 32946
+                && compression != 32773) {
+            return null;
+        }
+        int spp = f.intValue(TiffFields.SAMPLES_PER_PIXEL, 1);
+        long[] bits = f.has(TiffFields.BITS_PER_SAMPLE) ? f.longs(TiffFields.BITS_PER_SAMPLE) : new long[] {1};
+        long[] formats = f.has(TiffFields.SAMPLE_FORMAT) ? f.longs(TiffFields.SAMPLE_FORMAT) : new long[] {1};
+        int planar = f.intValue(TiffFields.PLANAR_CONFIGURATION, 1);
+        if (spp > 1 && planar != 2 && (bits.length < spp || formats.length < spp)) {
+            return null; // a per-sample array is short: leave the file to the decoder's own rules
+        }
+        int blockWidth = tiled ? f.intValue(TiffFields.TILE_WIDTH, width) : width;
+        long[] offsets = f.longs(tiled ? TiffFields.TILE_OFFSETS : TiffFields.STRIP_OFFSETS);
+        long[] counts = f.longs(tiled ? TiffFields.TILE_BYTE_COUNTS : TiffFields.STRIP_BYTE_COUNTS);
+        long blocks = (long) ((width + blockWidth - 1) / blockWidth) * ((height + rowBlock - 1) / rowBlock);
+        if (offsets.length < blocks || counts.length < blocks) {
+            return null;
+        }
+        return new TiffSubset.Layout(order, width, height, bits, compression,
+                f.intValue(TiffFields.PHOTOMETRIC, 1), spp, planar, f.intValue(TiffFields.PREDICTOR, 1), formats,
+                f.has(TiffFields.EXTRA_SAMPLES) ? f.longs(TiffFields.EXTRA_SAMPLES) : new long[0], tiled,
+                blockWidth, rowBlock, offsets, counts);
+    }
+
+    /** The byte order of the TIFF header ("II" little-endian, "MM" big-endian). */
+    private static ByteOrder byteOrder(FileChannel channel) throws IOException {
+        ByteBuffer b = ByteBuffer.allocate(2);
+        channel.read(b, 0);
+        return b.get(0) == 'M' ? ByteOrder.BIG_ENDIAN : ByteOrder.LITTLE_ENDIAN;
+    }
+
+    /**
+     * Columns {@code [skipX, skipX+width)} of rows {@code [skipY, skipY+rows)} of band 0 of the raster as float32,
+     * undoing Java's lack of signed bytes and unsigned ints.
+     */
+    private void copyBand0(Raster raster, int skipX, int skipY, int width, int rows, float[] dst) {
+        int x0 = raster.getMinX() + skipX;
+        int y0 = raster.getMinY() + skipY;
         SampleType type = info.dataType();
         int dataType = raster.getDataBuffer().getDataType();
         if (dataType == DataBuffer.TYPE_INT || dataType == DataBuffer.TYPE_BYTE) {
@@ -184,7 +264,11 @@ final class GeoTiffSource implements RasterSource {
     @Override
     public void close() throws IOException {
         reader.dispose();
-        stream.close();
+        try {
+            stream.close();
+        } finally {
+            channel.close();
+        }
     }
 
     /** The sample type from BitsPerSample and SampleFormat, refusing what a DEM reader cannot decode. */

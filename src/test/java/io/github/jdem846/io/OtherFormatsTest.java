@@ -86,6 +86,31 @@ class OtherFormatsTest {
     }
 
     @Test
+    void planarTwoBandFileGivesBandOneInEveryWindow() throws IOException {
+        Path file = FORMATS.resolve("volcano_2bands_planar_tile16.tif");
+        Dem volcano = TestDems.load(TestDems.VOLCANO);
+        assertSameValues(volcano, DemReader.read(file), "planar band 1");
+        assertSameValues(volcano.crop(5, 17, 23, 40), DemReader.read(file, ReadRequest.of(Window.cells(5, 17, 23,
+                40))), "planar window across tile edges");
+    }
+
+    @Test
+    void jpegCompressedTiffIsReadWithoutSubsetting() throws IOException {
+        // JPEG is lossy (up to 5 m off the source here): compare with GDAL's decode of the same file
+        // (testdata/golden/readers/README.md), and check the loss is small.
+        Path file = FORMATS.resolve("volcano_uint8_jpeg_q95.tif");
+        Dem full = DemReader.read(file);
+        assertSameValues(DemReader.read(Path.of("testdata/golden/readers/volcano_uint8_jpeg_q95_gdal.asc")), full,
+                "JPEG decode vs GDAL");
+        Dem volcano = TestDems.load(TestDems.VOLCANO);
+        for (int i = 0; i < volcano.backingArray().length; i++) {
+            assertEquals(volcano.backingArray()[i], full.backingArray()[i], 5, "cell " + i);
+        }
+        assertSameValues(full.crop(5, 17, 23, 40), DemReader.read(file, ReadRequest.of(Window.cells(5, 17, 23,
+                40))), "JPEG window");
+    }
+
+    @Test
     void pixelIsPointGivesTheSameCornerGeometry() throws IOException {
         DemInfo area = DemReader.inspect(TestDems.DEM_DIR.resolve(TestDems.VOLCANO + ".tif"));
         DemInfo point = DemReader.inspect(FORMATS.resolve("volcano_pixelispoint.tif"));
