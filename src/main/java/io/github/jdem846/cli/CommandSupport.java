@@ -17,12 +17,31 @@ final class CommandSupport {
         return loaded.dem().geometry().window(loaded.col(), loaded.row(), loaded.width(), loaded.height());
     }
 
-    /** Prints the reader's notices (several bands, assumed CRS, …). */
+    /** Prints the reader's notices (several bands, assumed CRS, …) and a projection scale notice. */
     static void printNotices(DemLoader.Loaded loaded, PrintWriter err) {
         for (String notice : loaded.info().notices()) {
             err.println("jdem846: note: " + notice);
         }
+        scaleNotice(loaded.info().geometry()).ifPresent(n -> err.println("jdem846: note: " + n));
         err.flush();
+    }
+
+    /**
+     * A notice when the projection's scale factor at the grid's centre departs from 1 by more than 2 % (Web
+     * Mercator away from the equator): slopes are computed from the nominal cell size, as gdaldem does, and the
+     * notice gives the {@code --xy-scale} that would use the true ground size instead.
+     */
+    static java.util.Optional<String> scaleNotice(GridGeometry g) {
+        java.util.OptionalDouble k = g.groundScaleFactor();
+        if (k.isEmpty() || Math.abs(k.getAsDouble() - 1) <= 0.02) {
+            return java.util.Optional.empty();
+        }
+        double f = k.getAsDouble();
+        double unit = g.crs().linearUnitMeters();
+        return java.util.Optional.of(String.format(java.util.Locale.ROOT, "the projection's scale factor at the "
+                + "centre is %.3f: a cell is %.1f m in the CRS but %.1f m on the ground, so slopes come out %.2f× "
+                + "gentler; --xy-scale %.4f uses the ground size", f, g.cellWidth() * unit,
+                g.cellWidth() * unit / f, f, unit / f));
     }
 
     /**

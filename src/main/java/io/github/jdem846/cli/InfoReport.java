@@ -93,6 +93,9 @@ final class InfoReport {
         for (String n : info.notices()) {
             line(sb, "Notice", n);
         }
+        for (String n : CommandSupport.scaleNotice(g).stream().toList()) {
+            line(sb, "Notice", n);
+        }
         return sb.toString().stripTrailing();
     }
 
@@ -124,6 +127,8 @@ final class InfoReport {
                         .number("north", b.north()).number("west", b.west()).number("east", b.east()).toString())
                         .orElse("null"))
                 .string("anchor", g.declaredAnchor() == PixelAnchor.CENTER ? "center" : "corner")
+                .raw("groundScaleFactor", g.groundScaleFactor().isPresent()
+                        ? Json.number(g.groundScaleFactor().getAsDouble()) : "null")
                 .strings("notices", info.notices());
         if (sun != null) {
             j.raw("sun", new Json().string("time", sunTime).number("azimuth", sun.azimuthDegrees())

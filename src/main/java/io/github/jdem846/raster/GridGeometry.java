@@ -178,6 +178,38 @@ public final class GridGeometry {
         return geoLocator().map(l -> l.toLatLon(centerX(col), centerY(row)));
     }
 
+    /**
+     * For a projected grid whose projection is known: the ratio of the nominal east–west cell width in metres to
+     * its true length on the ground at the grid's centre (the projection's scale factor there; ≈ 1.52 for Web
+     * Mercator at 49° N, ≈ 1 for UTM). Empty when it cannot be computed (geographic or unknown CRS, projection not
+     * known offline).
+     */
+    public java.util.OptionalDouble groundScaleFactor() {
+        if (crs.kind() != CrsInfo.Kind.PROJECTED || width < 1) {
+            return java.util.OptionalDouble.empty();
+        }
+        try {
+            int row = height / 2;
+            double x0 = originX + (width / 2.0 - 0.5) * cellWidth;
+            double y = centerY(row);
+            Optional<LatLon> a = geoLocator().map(l -> l.toLatLon(x0, y));
+            Optional<LatLon> b = geoLocator().map(l -> l.toLatLon(x0 + cellWidth, y));
+            if (a.isEmpty() || b.isEmpty()) {
+                return java.util.OptionalDouble.empty();
+            }
+            double meanLat = 0.5 * (a.get().latitude() + b.get().latitude());
+            Ellipsoid e = crs.ellipsoidOrWgs84();
+            double dx = e.parallelArcLength(meanLat, b.get().longitude() - a.get().longitude());
+            double dy = e.meridianArcLength(a.get().latitude(), b.get().latitude());
+            double ground = Math.hypot(dx, dy);
+            double nominal = cellWidth * crs.linearUnitMeters();
+            return ground > 0 && Double.isFinite(ground) ? java.util.OptionalDouble.of(nominal / ground)
+                    : java.util.OptionalDouble.empty();
+        } catch (RuntimeException e) {
+            return java.util.OptionalDouble.empty(); // outside the projection's domain
+        }
+    }
+
     /** The latitude/longitude box of the grid's outer edges, when the CRS allows. */
     public Optional<LatLonBox> latLonExtent() {
         return geoLocator().map(l -> l.extent(originX, southY(), eastX(), originY));
