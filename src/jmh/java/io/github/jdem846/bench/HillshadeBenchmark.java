@@ -2,11 +2,9 @@ package io.github.jdem846.bench;
 
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
-import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shade.HillshadeOptions;
 import io.github.jdem846.shade.IlluminationStage;
-import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
@@ -47,7 +45,7 @@ public class HillshadeBenchmark {
 
     @Setup
     public void setUp() {
-        dem = new Dem(fractal(SIZE, 846L), GridGeometry.metric(SIZE, SIZE, 30));
+        dem = FractalDem.dem(SIZE, 846L);
         stage = method.stage(HillshadeOptions.DEFAULTS);
         out = new float[SIZE * SIZE];
     }
@@ -58,41 +56,5 @@ public class HillshadeBenchmark {
     public float[] illuminate() {
         stage.illuminate(dem, light, 0, 0, SIZE, SIZE, out);
         return out;
-    }
-
-    /** A size × size diamond-square terrain (roughness 0.5, relief about ±1000 m) from {@code seed}. */
-    static float[] fractal(int size, long seed) {
-        int n = size; // power of two; the lattice has n + 1 points per side
-        double[] h = new double[(n + 1) * (n + 1)];
-        SplittableRandom rnd = new SplittableRandom(seed);
-        double amplitude = 1000;
-        for (int step = n; step > 1; step /= 2, amplitude *= 0.5) {
-            int half = step / 2;
-            for (int y = half; y < n; y += step) {           // diamond: centres of squares
-                for (int x = half; x < n; x += step) {
-                    double mean = (h[(y - half) * (n + 1) + x - half] + h[(y - half) * (n + 1) + x + half]
-                            + h[(y + half) * (n + 1) + x - half] + h[(y + half) * (n + 1) + x + half]) / 4;
-                    h[y * (n + 1) + x] = mean + amplitude * (rnd.nextDouble() * 2 - 1);
-                }
-            }
-            for (int y = 0; y <= n; y += half) {               // square: edge midpoints
-                for (int x = (y / half) % 2 == 0 ? half : 0; x <= n; x += step) {
-                    double sum = 0;
-                    int count = 0;
-                    if (y >= half) { sum += h[(y - half) * (n + 1) + x]; count++; }
-                    if (y + half <= n) { sum += h[(y + half) * (n + 1) + x]; count++; }
-                    if (x >= half) { sum += h[y * (n + 1) + x - half]; count++; }
-                    if (x + half <= n) { sum += h[y * (n + 1) + x + half]; count++; }
-                    h[y * (n + 1) + x] = sum / count + amplitude * (rnd.nextDouble() * 2 - 1);
-                }
-            }
-        }
-        float[] v = new float[size * size];
-        for (int y = 0; y < size; y++) {
-            for (int x = 0; x < size; x++) {
-                v[y * size + x] = (float) (1500 + h[y * (n + 1) + x]);
-            }
-        }
-        return v;
     }
 }
