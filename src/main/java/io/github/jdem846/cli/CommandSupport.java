@@ -4,6 +4,7 @@ import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.render.DemLoader;
 import io.github.jdem846.shadow.ShadowOptions;
+import io.github.jdem846.sun.Body;
 import java.io.PrintWriter;
 
 /** What the rendering subcommands share beyond their option mixins. */
@@ -49,10 +50,10 @@ final class CommandSupport {
      * grid is placed, so the halo is computed for the sun of the whole file (the window's own sun differs by far
      * less than the halo's margin).
      */
-    static DemLoader.Halo shadowHalo(SunOptions sun, ShadowOptions options, PrintWriter err) {
+    static DemLoader.Halo shadowHalo(SunOptions sun, Body body, ShadowOptions options, PrintWriter err) {
         return (file, info, window) -> {
             LightDirection light = sun.byTime()
-                    ? sun.light(info.geometry(), 0, new PrintWriter(java.io.Writer.nullWriter())).field().central()
+                    ? sun.light(info.geometry(), body, 0, new PrintWriter(java.io.Writer.nullWriter())).field().central()
                     : sun.fixedLight();
             return DemLoader.Halo.shadows(light, options).cells(file, info, window);
         };

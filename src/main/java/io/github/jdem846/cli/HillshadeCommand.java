@@ -57,7 +57,7 @@ public final class HillshadeCommand implements Callable<Integer> {
         HillshadeOptions options = shading.options();
         DemLoader.Loaded loaded = input.load(DemLoader.Halo.uniform(1), false);
         CommandSupport.printNotices(loaded, err);
-        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), execution.tileSize, err);
+        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
         float[] illumination;
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
             illumination = new Renderer(execution.settings()).illumination(loaded.dem(), m.stage(options),

@@ -6,6 +6,7 @@ import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.LoadedDem;
 import io.github.jdem846.io.ReadRequest;
 import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.sun.Body;
 import io.github.jdem846.sun.Observer;
 import io.github.jdem846.sun.SunLightField;
 import io.github.jdem846.sun.SunPosition;
@@ -48,6 +49,9 @@ public final class InfoCommand implements Callable<Integer> {
     String sunAt;
 
     @Mixin
+    BodyOptions bodyOptions;
+
+    @Mixin
     VerboseOption verbose;
 
     @CommandLine.Spec
@@ -65,8 +69,11 @@ public final class InfoCommand implements Callable<Integer> {
             info = DemReader.inspect(file);
             stats = DemReader.statistics(file);
         }
+        Body body = bodyOptions.body();
+        info = info.withDefaultEllipsoid(body.ellipsoid());
         SunPosition sun = null;
         if (sunTime != null) {
+            body.requireSunByDateAndTime();
             LatLon place = sunAt == null ? null : LatLon.parse(sunAt);
             sun = SunLightField.of(info.geometry(), ZonedTimeParser.parse(sunTime), place, 0, Observer.SEA_LEVEL)
                     .centralSun();

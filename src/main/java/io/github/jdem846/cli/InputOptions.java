@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.Locale;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -23,6 +24,9 @@ public final class InputOptions {
             description = "GeoTIFF, GridFloat (.flt), ESRI ASCII (.asc), BIL (.bil) or SRTM .hgt; the bundled "
                     + "sample DEM (Big Tujunga, California) when omitted.")
     Path file;
+
+    @Mixin
+    BodyOptions bodyOptions;
 
     @Option(names = "--window", paramLabel = "W,S,E,N|cells:COL,ROW,W,H",
             description = "Render only this part: a box in the DEM's CRS units (west,south,east,north) or a cell "
@@ -92,7 +96,7 @@ public final class InputOptions {
      */
     DemLoader.Loaded load(DemLoader.Halo halo, boolean fileStatistics) throws IOException {
         if (file != null) {
-            return DemLoader.load(file, window(), size(), halo, fileStatistics);
+            return DemLoader.load(file, window(), size(), halo, fileStatistics, body().ellipsoid());
         }
         Path tmp = Files.createTempFile("jdem846-sample-", ".tif");
         try {
@@ -102,10 +106,15 @@ public final class InputOptions {
                 }
                 Files.copy(in, tmp, StandardCopyOption.REPLACE_EXISTING);
             }
-            return DemLoader.load(tmp, window(), size(), halo, fileStatistics);
+            return DemLoader.load(tmp, window(), size(), halo, fileStatistics, body().ellipsoid());
         } finally {
             Files.deleteIfExists(tmp);
         }
+    }
+
+    /** The body of {@code --body}/{@code --radius}; the Earth by default. */
+    io.github.jdem846.sun.Body body() {
+        return bodyOptions.body();
     }
 
     /** The DEM file named, or {@code null} for the sample. */

@@ -76,11 +76,11 @@ public final class RenderCommand implements Callable<Integer> {
                 .withShadowOptions(shadowOptions.options()).withShadowIntensity(shadowIntensity);
         DemLoader.Halo halo = method == null ? DemLoader.Halo.NONE : DemLoader.Halo.uniform(1);
         if (scene.hasShadows()) {
-            halo = halo.union(CommandSupport.shadowHalo(sun, scene.shadowOptions(), err));
+            halo = halo.union(CommandSupport.shadowHalo(sun, input.body(), scene.shadowOptions(), err));
         }
         DemLoader.Loaded loaded = input.load(halo, scene.tint() != null);
         CommandSupport.printNotices(loaded, err);
-        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), execution.tileSize, err);
+        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
         scene = scene.withLight(lighting.field()).withFade(lighting.fade()).withTintRange(loaded.fileStatistics());
         RenderedImage image;
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {

@@ -56,9 +56,9 @@ public final class ShadowsCommand implements Callable<Integer> {
         }
         Scene scene = Scene.defaults().withTint(null).withHillshade(null).withShadows(alg)
                 .withShadowOptions(shadowOptions.options());
-        DemLoader.Loaded loaded = input.load(CommandSupport.shadowHalo(sun, scene.shadowOptions(), err), false);
+        DemLoader.Loaded loaded = input.load(CommandSupport.shadowHalo(sun, input.body(), scene.shadowOptions(), err), false);
         CommandSupport.printNotices(loaded, err);
-        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), execution.tileSize, err);
+        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
         float[] mask;
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
             mask = new Renderer(execution.settings()).shadows(loaded.dem(), scene.withLight(lighting.field()),

@@ -69,13 +69,8 @@ public final class SunCommand implements Callable<Integer> {
             description = "Delta T = TT - UT in seconds (default: the estimate for the date, about 71 s in 2024).")
     Double deltaT;
 
-    @Option(names = "--body", paramLabel = "BODY",
-            description = "The body: earth (default), moon or mars. Sun positions by date are for the Earth only.")
-    String bodyName;
-
-    @Option(names = "--radius", paramLabel = "M",
-            description = "The radius in metres of a spherical body other than the named ones.")
-    Double radius;
+    @Mixin
+    BodyOptions bodyOptions;
 
     @Option(names = "--json", description = "Print one JSON object instead of text.")
     boolean json;
@@ -102,15 +97,8 @@ public final class SunCommand implements Callable<Integer> {
     }
 
     private Body body() {
-        if (bodyName != null && radius != null) {
-            throw new CommandLine.ParameterException(spec.commandLine(),
-                    "give either --body or --radius, not both");
-        }
         try {
-            if (radius != null) {
-                return Body.sphere(radius);
-            }
-            return bodyName == null ? Body.EARTH : Body.named(bodyName);
+            return bodyOptions.body();
         } catch (IllegalArgumentException e) {
             throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }

@@ -4,6 +4,7 @@ import io.github.jdem846.geo.LatLon;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.light.LightField;
 import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.sun.Body;
 import io.github.jdem846.sun.Observer;
 import io.github.jdem846.sun.SunLightField;
 import io.github.jdem846.sun.TwilightFade;
@@ -59,7 +60,7 @@ public final class SunOptions {
     }
 
     /** The light over {@code grid} and the twilight darkening; prints the sun used on {@code err}. */
-    Lighting light(GridGeometry grid, int tileSize, PrintWriter err) {
+    Lighting light(GridGeometry grid, Body body, int tileSize, PrintWriter err) {
         if (time == null) {
             if (place != null || perTile || twilight) {
                 throw new IllegalArgumentException("--sun-at, --sun-per-tile and --twilight need --sun-time");
@@ -69,6 +70,7 @@ public final class SunOptions {
         if (azimuth != null || elevation != null) {
             throw new IllegalArgumentException("give either --sun-time or --sun-azimuth/--sun-elevation, not both");
         }
+        body.requireSunByDateAndTime();
         LatLon at = place == null ? null : LatLon.parse(place);
         SunLightField field = SunLightField.of(grid, ZonedTimeParser.parse(time), at, perTile ? tileSize : 0,
                 Observer.SEA_LEVEL);

@@ -37,6 +37,12 @@ public record DemInfo(String source, DemFormat format, SampleType dataType, int 
         return geometry.height();
     }
 
+    /** This header with {@link GridGeometry#withDefaultEllipsoid(io.github.jdem846.geo.Ellipsoid)} applied. */
+    public DemInfo withDefaultEllipsoid(io.github.jdem846.geo.Ellipsoid body) {
+        GridGeometry g = geometry.withDefaultEllipsoid(body);
+        return g == geometry ? this : new DemInfo(source, format, dataType, bands, g, declaredNoData, notices);
+    }
+
     /** The declared no-data value as {@link io.github.jdem846.raster.Dem} takes it: NaN when none. */
     public double noDataOrNaN() {
         return declaredNoData != null ? declaredNoData : Double.NaN;

@@ -102,6 +102,23 @@ public final class Dem {
         return s;
     }
 
+    /**
+     * The same elevations (shared, not copied) on another geometry of the same size, e.g. with another ellipsoid;
+     * this DEM when {@code g} is the same object.
+     */
+    public Dem withGeometry(GridGeometry g) {
+        if (g == geometry) {
+            return this;
+        }
+        if (g.width() != width() || g.height() != height()) {
+            throw new IllegalArgumentException("geometry " + g.width() + "×" + g.height() + " does not fit a "
+                    + width() + "×" + height() + " DEM");
+        }
+        Dem d = ofNormalized(values, g, declaredNoData);
+        d.statistics = statistics;
+        return d;
+    }
+
     /** Cells {@code [col, col+w) × [row, row+h)} as a new DEM with the matching geometry. */
     public Dem crop(int col, int row, int w, int h) {
         if (col < 0 || row < 0 || w < 1 || h < 1 || col + w > width() || row + h > height()) {

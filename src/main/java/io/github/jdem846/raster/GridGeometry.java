@@ -238,6 +238,23 @@ public final class GridGeometry {
                 declaredAnchor);
     }
 
+    /**
+     * This grid on {@code body} when the file did not name an ellipsoid: when the CRS names none, or was only
+     * assumed from the extent (then it becomes "geographic on {@code body}", also assumed). A CRS read from the
+     * file keeps its own ellipsoid, and this grid is returned unchanged.
+     */
+    public GridGeometry withDefaultEllipsoid(Ellipsoid body) {
+        Objects.requireNonNull(body, "body");
+        if (crs.ellipsoid() != null && !crs.assumed() || body.equals(crs.ellipsoid())) {
+            return this;
+        }
+        CrsInfo c = crs.assumed()
+                ? new CrsInfo(crs.kind() == CrsInfo.Kind.GEOGRAPHIC ? "geographic on " + body.name() : crs.name(),
+                        null, crs.kind(), crs.linearUnitMeters(), body, null, true)
+                : new CrsInfo(crs.name(), crs.epsg(), crs.kind(), crs.linearUnitMeters(), body, crs.sisCrs(), false);
+        return withCrs(c);
+    }
+
     /** A copy with another CRS. */
     public GridGeometry withCrs(CrsInfo newCrs) {
         return new GridGeometry(width, height, originX, originY, cellWidth, cellHeight, newCrs, declaredAnchor);

@@ -1,5 +1,6 @@
 package io.github.jdem846.render;
 
+import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.LoadedDem;
@@ -121,9 +122,20 @@ public final class DemLoader {
      */
     public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics)
             throws IOException {
+        return load(file, window, size, halo, fileStatistics, Ellipsoid.WGS84);
+    }
+
+    /**
+     * As {@link #load(Path, Window, OutputSize, Halo, boolean)}, on {@code body} when the file names no ellipsoid
+     * ({@link io.github.jdem846.raster.GridGeometry#withDefaultEllipsoid(Ellipsoid)}): metric cell sizes of a
+     * geographic grid, halos and the curvature radius then follow the body.
+     */
+    public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics,
+                              Ellipsoid body) throws IOException {
         Objects.requireNonNull(size, "size");
         Objects.requireNonNull(halo, "halo");
-        DemInfo info = DemReader.inspect(file);
+        Objects.requireNonNull(body, "body");
+        DemInfo info = DemReader.inspect(file).withDefaultEllipsoid(body);
         Window.Cells win = window == null ? Window.cells(0, 0, info.width(), info.height())
                 : window.resolve(info.geometry());
         int[] px = size.pixelsFor(win.width(), win.height());
@@ -139,9 +151,11 @@ public final class DemLoader {
                 win.height() + north + south);
         int decimation = (int) Math.max(1, Math.floor(Math.min(fx, fy) + 1e-9));
         LoadedDem loaded = DemReader.load(file, new ReadRequest(read, decimation));
+        Dem read0 = loaded.dem();
+        Dem onBody = read0.withGeometry(read0.geometry().withDefaultEllipsoid(body));
         int outW = (int) Math.max(1, Math.round(read.width() / fx));
         int outH = (int) Math.max(1, Math.round(read.height() / fy));
-        Dem dem = DemResampler.resample(loaded.dem(), outW, outH);
+        Dem dem = DemResampler.resample(onBody, outW, outH);
         int col = (int) Math.round(west / fx);
         int row = (int) Math.round(north / fy);
         int w = Math.min(px[0], outW - col);
@@ -152,7 +166,7 @@ public final class DemLoader {
                     && dem.width() == info.width() && dem.height() == info.height();
             stats = whole ? dem.statistics() : DemReader.statistics(file);
         }
-        return new Loaded(loaded.info(), dem, col, row, w, hgt, stats);
+        return new Loaded(loaded.info().withDefaultEllipsoid(body), dem, col, row, w, hgt, stats);
     }
 
     /** Halo cells on one side: whole output pixels' worth, at most what the grid has on that side. */
