@@ -50,12 +50,13 @@ final class CommandSupport {
      * grid is placed, so the halo is computed for the sun of the whole file (the window's own sun differs by far
      * less than the halo's margin).
      */
-    static DemLoader.Halo shadowHalo(SunOptions sun, Body body, ShadowOptions options, PrintWriter err) {
+    static DemLoader.Halo shadowHalo(SunOptions sun, Body body, double zFactor, ShadowOptions options,
+                                     PrintWriter err) {
         return (file, info, window) -> {
             LightDirection light = sun.byTime()
                     ? sun.light(info.geometry(), body, 0, new PrintWriter(java.io.Writer.nullWriter())).field().central()
                     : sun.fixedLight();
-            return DemLoader.Halo.shadows(light, options).cells(file, info, window);
+            return DemLoader.Halo.shadows(light.forHeightsScaledBy(zFactor), options).cells(file, info, window);
         };
     }
 }

@@ -76,7 +76,8 @@ public final class RenderCommand implements Callable<Integer> {
                 .withShadowOptions(shadowOptions.options()).withShadowIntensity(shadowIntensity);
         DemLoader.Halo halo = method == null ? DemLoader.Halo.NONE : DemLoader.Halo.uniform(1);
         if (scene.hasShadows()) {
-            halo = halo.union(CommandSupport.shadowHalo(sun, input.body(), scene.shadowOptions(), err));
+            halo = halo.union(CommandSupport.shadowHalo(sun, input.body(), scene.hillshadeOptions().zFactor(),
+                    scene.shadowOptions(), err));
         }
         DemLoader.Loaded loaded = input.load(halo, scene.tint() != null);
         CommandSupport.printNotices(loaded, err);

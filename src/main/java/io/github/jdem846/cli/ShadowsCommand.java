@@ -56,7 +56,8 @@ public final class ShadowsCommand implements Callable<Integer> {
         }
         Scene scene = Scene.defaults().withTint(null).withHillshade(null).withShadows(alg)
                 .withShadowOptions(shadowOptions.options());
-        DemLoader.Loaded loaded = input.load(CommandSupport.shadowHalo(sun, input.body(), scene.shadowOptions(), err), false);
+        DemLoader.Loaded loaded = input.load(
+                CommandSupport.shadowHalo(sun, input.body(), 1, scene.shadowOptions(), err), false);
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
         float[] mask;

@@ -42,6 +42,24 @@ public record LightDirection(double azimuthDegrees, double elevationDegrees) {
         return a;
     }
 
+    /**
+     * The light as terrain with heights multiplied by {@code k} sees it, for shading the unexaggerated heights:
+     * the same azimuth and tan(elevation′) = tan(elevation)/k, so a ray's rise per metre compared with true heights
+     * equals its rise compared with exaggerated ones. A sun at or below the horizon or at the zenith is unchanged.
+     *
+     * @throws IllegalArgumentException unless {@code k} is a finite number &gt; 0
+     */
+    public LightDirection forHeightsScaledBy(double k) {
+        if (!(k > 0) || Double.isInfinite(k)) {
+            throw new IllegalArgumentException("height scale must be a finite number > 0, got " + k);
+        }
+        if (k == 1 || isBelowHorizon() || isAtZenith()) {
+            return this;
+        }
+        double e = Math.toRadians(elevationDegrees);
+        return new LightDirection(azimuthDegrees, Math.toDegrees(Math.atan2(Math.sin(e), k * Math.cos(e))));
+    }
+
     /** East component of the unit vector toward the light. */
     public double east() {
         return Math.cos(Math.toRadians(elevationDegrees)) * Math.sin(Math.toRadians(azimuthDegrees));

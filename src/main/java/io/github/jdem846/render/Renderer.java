@@ -141,7 +141,7 @@ public final class Renderer {
             return null;
         }
         progress.update("shadows", 0, 1);
-        ShadowMask mask = scene.shadows().compute(dem, scene.light().central(), scene.shadowOptions(), pool);
+        ShadowMask mask = scene.shadows().compute(dem, scene.shadowLight(), scene.shadowOptions(), pool);
         if (Thread.interrupted()) {
             throw new InterruptedException("render cancelled");
         }

@@ -105,6 +105,14 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
                 range);
     }
 
+    /**
+     * The light the cast shadows are traced with: the central light, for terrain exaggerated by the z-factor (the
+     * shadows of the terrain the hillshade shows; {@link LightDirection#forHeightsScaledBy(double)}).
+     */
+    public LightDirection shadowLight() {
+        return light.central().forHeightsScaledBy(hillshadeOptions.zFactor());
+    }
+
     /** True when cast shadows are to be computed. */
     public boolean hasShadows() {
         return shadows != null && shadows != ShadowAlgorithm.NONE;
