@@ -61,9 +61,9 @@ public final class HillshadeCommand implements Callable<Integer> {
         float[] illumination;
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
             illumination = new Renderer(execution.settings()).illumination(loaded.dem(), m.stage(options),
-                    lighting.field(), progress);
+                    lighting.field(), loaded.area(), progress);
         }
-        byte[] gray = m.toGray(loaded.crop(illumination), options);
+        byte[] gray = m.toGray(illumination, options);
         output.writeGray(gray, CommandSupport.outputGeometry(loaded), 0.0, err);
         return 0;
     }

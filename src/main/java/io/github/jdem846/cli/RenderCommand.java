@@ -85,9 +85,9 @@ public final class RenderCommand implements Callable<Integer> {
         scene = scene.withLight(lighting.field()).withFade(lighting.fade()).withTintRange(loaded.fileStatistics());
         RenderedImage image;
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
-            image = new Renderer(execution.settings()).render(loaded.dem(), scene, progress);
+            image = new Renderer(execution.settings()).render(loaded.dem(), scene, loaded.area(), progress);
         }
-        output.writeRgba(loaded.crop(image.argb()), CommandSupport.outputGeometry(loaded), err);
+        output.writeRgba(image.argb(), CommandSupport.outputGeometry(loaded), err);
         return 0;
     }
 }

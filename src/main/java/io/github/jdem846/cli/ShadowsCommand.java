@@ -63,9 +63,9 @@ public final class ShadowsCommand implements Callable<Integer> {
         float[] mask;
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
             mask = new Renderer(execution.settings()).shadows(loaded.dem(), scene.withLight(lighting.field()),
-                    progress);
+                    loaded.area(), progress);
         }
-        float[] window = loaded.crop(mask);
+        float[] window = mask;
         byte[] bytes = new byte[window.length];
         for (int i = 0; i < window.length; i++) {
             bytes[i] = (byte) Math.round(Math.max(0, Math.min(1, window[i])) * 255f);

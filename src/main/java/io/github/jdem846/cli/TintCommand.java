@@ -47,8 +47,8 @@ public final class TintCommand implements Callable<Integer> {
         DemLoader.Loaded loaded = input.load(DemLoader.Halo.NONE, scene.tint() != null);
         CommandSupport.printNotices(loaded, err);
         RenderedImage image = new Renderer(execution.settings()).render(loaded.dem(),
-                scene.withTintRange(loaded.fileStatistics()), RenderProgress.NONE);
-        output.writeRgba(loaded.crop(image.argb()), CommandSupport.outputGeometry(loaded), err);
+                scene.withTintRange(loaded.fileStatistics()), loaded.area(), RenderProgress.NONE);
+        output.writeRgba(image.argb(), CommandSupport.outputGeometry(loaded), err);
         return 0;
     }
 }

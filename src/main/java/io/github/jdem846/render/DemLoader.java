@@ -76,33 +76,14 @@ public final class DemLoader {
     public record Loaded(DemInfo info, Dem dem, int col, int row, int width, int height,
                          ElevationStatistics fileStatistics) {
 
+        /** The output window's cells within {@code dem}. */
+        public io.github.jdem846.shadow.CellWindow area() {
+            return new io.github.jdem846.shadow.CellWindow(col, row, width, height);
+        }
+
         /** True when the grid holds nothing but the output window. */
         public boolean hasNoHalo() {
             return col == 0 && row == 0 && width == dem.width() && height == dem.height();
-        }
-
-        /** The output window cut out of {@code pixels} (row length {@code dem.width()}). */
-        public int[] crop(int[] pixels) {
-            if (hasNoHalo()) {
-                return pixels;
-            }
-            int[] out = new int[width * height];
-            for (int r = 0; r < height; r++) {
-                System.arraycopy(pixels, (row + r) * dem.width() + col, out, r * width, width);
-            }
-            return out;
-        }
-
-        /** The output window cut out of {@code values} (row length {@code dem.width()}). */
-        public float[] crop(float[] values) {
-            if (hasNoHalo()) {
-                return values;
-            }
-            float[] out = new float[width * height];
-            for (int r = 0; r < height; r++) {
-                System.arraycopy(values, (row + r) * dem.width() + col, out, r * width, width);
-            }
-            return out;
         }
 
         /** The output window of the grid itself. */

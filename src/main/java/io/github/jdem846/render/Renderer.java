@@ -4,14 +4,15 @@ import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.light.LightField;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.shade.IlluminationStage;
+import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.ShadowMask;
 import io.github.jdem846.tint.TintFunction;
 import java.util.Objects;
 import java.util.concurrent.ForkJoinPool;
 
 /**
- * Renders a {@link Scene} of a {@link Dem} into ARGB pixels, one pixel per DEM cell: cast shadows first (the whole
- * grid, parallel inside the shadow algorithm), then tint, illumination and composition tile by tile on a
+ * Renders a {@link Scene} of a {@link Dem} (or of a rectangle of it, the rest serving as halo) into ARGB pixels, one
+ * pixel per DEM cell: cast shadows first (parallel inside the shadow algorithm), then tint, illumination and composition tile by tile on a
  * {@link ForkJoinPool}. The result is identical for any thread count and tile size.
  *
  * <p>To render at a smaller size, resample the DEM first ({@link io.github.jdem846.raster.DemResampler}, or a
@@ -41,46 +42,60 @@ public final class Renderer {
 
     /** Renders {@code scene} over the whole of {@code dem}, reporting progress per stage. */
     public RenderedImage render(Dem dem, Scene scene, RenderProgress progress) throws InterruptedException {
+        return render(dem, scene, CellWindow.whole(dem.width(), dem.height()), progress);
+    }
+
+    /**
+     * Renders only the cells of {@code area} (the picture has its size and geometry); the rest of {@code dem} is
+     * read as the halo that hillshade normals and cast shadows need, but never drawn or traced. Equal to the same
+     * cells of a whole-grid render.
+     */
+    public RenderedImage render(Dem dem, Scene scene, CellWindow area, RenderProgress progress)
+            throws InterruptedException {
         Objects.requireNonNull(dem, "dem");
         Objects.requireNonNull(scene, "scene");
         Objects.requireNonNull(progress, "progress");
+        requireInside(area, dem);
         ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
         try {
-            return render(dem, scene, progress, pool);
+            return render(dem, scene, area, progress, pool);
         } finally {
             pool.shutdownNow();
         }
     }
 
-    private RenderedImage render(Dem dem, Scene scene, RenderProgress progress, ForkJoinPool pool)
+    private RenderedImage render(Dem dem, Scene scene, CellWindow area, RenderProgress progress, ForkJoinPool pool)
             throws InterruptedException {
-        int width = dem.width();
-        int height = dem.height();
+        int width = area.width();
+        int height = area.height();
         TintFunction tint = scene.tint() == null ? elevation -> Float.isNaN(elevation) ? 0 : PLAIN_GRAY
                 : scene.tint().bind(scene.tintRange() != null ? scene.tintRange() : dem.statistics());
-        float[] shadow = castShadows(dem, scene, pool, progress);
+        float[] shadow = castShadows(dem, scene, area, pool, progress);
         IlluminationStage illumination = scene.hillshade() == null ? null
                 : scene.hillshade().stage(scene.hillshadeOptions());
         Compositor compositor = new Compositor(scene.hillshadeOptions(), scene.shadowIntensity());
         LightField light = scene.light();
         int[] argb = new int[width * height];
         float[] values = dem.backingArray();
+        int demWidth = dem.width();
         new TileExecutor(pool, settings.tileSize()).forEachTile(width, height, "shading", progress,
-                (col0, row0, w, h) -> {
+                (c0, r0, w, h) -> {
                     float[] dot = new float[w * h];
                     if (illumination != null) {
-                        illuminate(dem, illumination, light, col0, row0, w, h, dot);
+                        illuminate(dem, illumination, light, area.col() + c0, area.row() + r0, w, h, dot);
                     }
                     for (int r = 0; r < h; r++) {
-                        int rowBase = (row0 + r) * width + col0;
+                        int out = (r0 + r) * width + c0;
+                        int in = (area.row() + r0 + r) * demWidth + area.col() + c0;
                         for (int c = 0; c < w; c++) {
-                            int i = rowBase + c;
-                            double s = shadow == null ? 0 : shadow[i];
-                            argb[i] = compositor.compose(tint.argb(values[i]), dot[r * w + c], s, scene.fade());
+                            double s = shadow == null ? 0 : shadow[out + c];
+                            argb[out + c] = compositor.compose(tint.argb(values[in + c]), dot[r * w + c], s,
+                                    scene.fade());
                         }
                     }
                 });
-        return new RenderedImage(width, height, argb, dem.geometry());
+        return new RenderedImage(width, height, argb,
+                dem.geometry().window(area.col(), area.row(), width, height));
     }
 
     /**
@@ -89,16 +104,23 @@ public final class Renderer {
      */
     public float[] illumination(Dem dem, IlluminationStage stage, LightField light, RenderProgress progress)
             throws InterruptedException {
-        int width = dem.width();
-        float[] out = new float[width * dem.height()];
+        return illumination(dem, stage, light, CellWindow.whole(dem.width(), dem.height()), progress);
+    }
+
+    /** The illumination of the cells of {@code area} only (row length {@code area.width()}). */
+    public float[] illumination(Dem dem, IlluminationStage stage, LightField light, CellWindow area,
+                                RenderProgress progress) throws InterruptedException {
+        requireInside(area, dem);
+        int width = area.width();
+        float[] out = new float[width * area.height()];
         ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
         try {
-            new TileExecutor(pool, settings.tileSize()).forEachTile(width, dem.height(), "hillshade", progress,
-                    (col0, row0, w, h) -> {
+            new TileExecutor(pool, settings.tileSize()).forEachTile(width, area.height(), "hillshade", progress,
+                    (c0, r0, w, h) -> {
                         float[] tile = new float[w * h];
-                        illuminate(dem, stage, light, col0, row0, w, h, tile);
+                        illuminate(dem, stage, light, area.col() + c0, area.row() + r0, w, h, tile);
                         for (int r = 0; r < h; r++) {
-                            System.arraycopy(tile, r * w, out, (row0 + r) * width + col0, w);
+                            System.arraycopy(tile, r * w, out, (r0 + r) * width + c0, w);
                         }
                     });
         } finally {
@@ -111,12 +133,27 @@ public final class Renderer {
      * The cast-shadow layer alone: the shadowed fraction of every cell (0 = lit, 1 = shadow; no-data 0).
      */
     public float[] shadows(Dem dem, Scene scene, RenderProgress progress) throws InterruptedException {
+        return shadows(dem, scene, CellWindow.whole(dem.width(), dem.height()), progress);
+    }
+
+    /** The cast-shadow layer of the cells of {@code area} only (row length {@code area.width()}). */
+    public float[] shadows(Dem dem, Scene scene, CellWindow area, RenderProgress progress)
+            throws InterruptedException {
+        requireInside(area, dem);
         ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
         try {
-            float[] s = castShadows(dem, scene, pool, progress);
-            return s != null ? s : new float[dem.width() * dem.height()];
+            float[] s = castShadows(dem, scene, area, pool, progress);
+            return s != null ? s : new float[area.width() * area.height()];
         } finally {
             pool.shutdownNow();
+        }
+    }
+
+    private static void requireInside(CellWindow area, Dem dem) {
+        Objects.requireNonNull(area, "area");
+        if (!area.isInside(dem.width(), dem.height())) {
+            throw new IllegalArgumentException("area " + area + " is not inside the " + dem.width() + "×"
+                    + dem.height() + " DEM");
         }
     }
 
@@ -134,14 +171,15 @@ public final class Renderer {
         }
     }
 
-    /** The shadowed fraction per cell, or {@code null} when the scene has no cast shadows. */
-    private static float[] castShadows(Dem dem, Scene scene, ForkJoinPool pool, RenderProgress progress)
-            throws InterruptedException {
+    /** The shadowed fraction of each cell of {@code area}, or {@code null} when the scene has no cast shadows. */
+    private static float[] castShadows(Dem dem, Scene scene, CellWindow area, ForkJoinPool pool,
+                                       RenderProgress progress) throws InterruptedException {
         if (!scene.hasShadows()) {
             return null;
         }
         progress.update("shadows", 0, 1);
-        ShadowMask mask = scene.shadows().compute(dem, scene.shadowLight(), scene.shadowOptions(), pool);
+        ShadowMask mask = scene.shadows().computeWindow(dem, scene.shadowLight(), scene.shadowOptions(), pool,
+                area);
         if (Thread.interrupted()) {
             throw new InterruptedException("render cancelled");
         }

@@ -35,6 +35,25 @@ class RendererTest {
     }
 
     @Test
+    void anAreaRendersLikeTheSameCellsOfTheWholeGrid() throws InterruptedException {
+        io.github.jdem846.shadow.CellWindow area = new io.github.jdem846.shadow.CellWindow(37, 21, 150, 90);
+        for (ShadowAlgorithm alg : new ShadowAlgorithm[] {ShadowAlgorithm.MARCH, ShadowAlgorithm.EXACT}) {
+            Scene scene = Scene.defaults().withShadows(alg).withLight(new LightDirection(250, 10));
+            Renderer renderer = new Renderer(new RenderSettings(2, 64));
+            RenderedImage whole = renderer.render(BT, scene);
+            RenderedImage part = renderer.render(BT, scene, area, RenderProgress.NONE);
+            assertEquals(area.width(), part.width());
+            assertEquals(BT.geometry().window(37, 21, 150, 90), part.geometry());
+            for (int r = 0; r < area.height(); r++) {
+                for (int c = 0; c < area.width(); c++) {
+                    assertEquals(whole.argb()[(area.row() + r) * BT.width() + area.col() + c],
+                            part.argb()[r * area.width() + c], alg + " cell " + c + "," + r);
+                }
+            }
+        }
+    }
+
+    @Test
     void eachPixelIsTheCompositionOfTheStages() throws InterruptedException {
         LightDirection light = new LightDirection(300, 20);
         Scene scene = Scene.defaults().withShadows(ShadowAlgorithm.MARCH).withLight(light);
