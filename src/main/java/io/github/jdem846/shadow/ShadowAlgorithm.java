@@ -94,12 +94,71 @@ public enum ShadowAlgorithm {
                 int halo = ShadowHalo.steps(frame, ShadowHalo.tileMin(dem, window), light, options);
                 new SunSweep(dem, frame, bilinear, options.firstCellTest()).run(window, halo, out, pool);
             }
-            case MARCH -> march(new RayMarcher(dem, frame, options.step(),
-                    options.sampling() == Sampling.BILINEAR), window, out, pool);
-            case EXACT -> march(new RayMarcher(dem, frame, StepSize.EIGHTH_CELL, true), window, out, pool);
+            case MARCH, EXACT -> march(marcher(dem, frame, options), window, out, pool);
             default -> throw new AssertionError(this);
         }
         return new ShadowMask(ww, wh, out);
+    }
+
+    /**
+     * Shadowed fractions of the listed cells only, in the order given: the same values as the same cells of
+     * {@link #compute(Dem, LightDirection, ShadowOptions, ForkJoinPool)}. {@code MARCH} and {@code EXACT} trace
+     * just these cells, so the cost grows with {@code cells.length} (the accuracy study measures them on a random
+     * sample of a large grid this way); {@code SWEEP} has no per-cell form and computes the whole grid first.
+     *
+     * @param cells flat cell indices, {@code row · width + col}, each in [0, width · height)
+     */
+    public float[] computeCells(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
+                                int[] cells) {
+        Objects.requireNonNull(dem, "dem");
+        Objects.requireNonNull(light, "light");
+        Objects.requireNonNull(options, "options");
+        Objects.requireNonNull(pool, "pool");
+        long n = (long) dem.width() * dem.height();
+        for (int cell : cells) {
+            if (cell < 0 || cell >= n) {
+                throw new IllegalArgumentException("cell index " + cell + " is outside the " + dem.width() + "×"
+                        + dem.height() + " DEM (expected 0 to " + (n - 1) + ")");
+            }
+        }
+        float[] out = new float[cells.length];
+        if (this == SWEEP || this == NONE || dem.statistics().isEmpty() || light.isAtZenith()
+                || light.isBelowHorizon()) {
+            float[] all = compute(dem, light, options, pool).backingArray();
+            for (int q = 0; q < cells.length; q++) {
+                out[q] = all[cells[q]];
+            }
+            return out;
+        }
+        RayMarcher marcher = marcher(dem, new RayFrame(dem, light, options), options);
+        int w = dem.width();
+        List<RecursiveAction> tasks = new ArrayList<>();
+        int perTask = 256;
+        for (int from = 0; from < cells.length; from += perTask) {
+            int a = from;
+            int b = Math.min(cells.length, from + perTask);
+            tasks.add(new RecursiveAction() {
+                @Override
+                protected void compute() {
+                    for (int q = a; q < b; q++) {
+                        out[q] = marcher.shade(cells[q] % w, cells[q] / w);
+                    }
+                }
+            });
+        }
+        pool.invoke(new RecursiveAction() {
+            @Override
+            protected void compute() {
+                invokeAll(tasks);
+            }
+        });
+        return out;
+    }
+
+    /** The ray marcher of {@code MARCH} (the options' step and sampling) or of {@code EXACT}. */
+    private RayMarcher marcher(Dem dem, RayFrame frame, ShadowOptions options) {
+        return this == EXACT ? new RayMarcher(dem, frame, StepSize.EIGHTH_CELL, true)
+                : new RayMarcher(dem, frame, options.step(), options.sampling() == Sampling.BILINEAR);
     }
 
     private static void march(RayMarcher marcher, CellWindow win, float[] out, ForkJoinPool pool) {

@@ -1,0 +1,138 @@
+package io.github.jdem846.bench;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.ForkJoinPool;
+
+/**
+ * The accuracy study of docs/accuracy.md: cast-shadow disagreement with {@code exact} against run time.
+ *
+ * <pre>
+ * java -Xmx6g -cp target/benchmarks.jar io.github.jdem846.bench.ShadowAccuracyStudy measure --dem bigtujunga \
+ *      [--elevations 2,5,10,20,45] [--azimuths 0,30,45,100,135,160,200,215,250,280,300,330] \
+ *      [--sample 200000] [--seed 846] [--threads 2] [--testdata testdata] [--out docs/accuracy]
+ * java -cp target/benchmarks.jar io.github.jdem846.bench.ShadowAccuracyStudy report \
+ *      [--in docs/accuracy] [--images docs/images] [--tables docs/accuracy/tables.md]
+ * </pre>
+ * {@code measure} writes one CSV per DEM and elevation ({@code OUT/DEM-eELEVATION.csv}), so a long study runs in
+ * pieces; {@code report} reads every CSV in {@code --in} and writes the Markdown tables and the work-precision
+ * plots. {@code --sample 0} compares every valid cell.
+ */
+public final class ShadowAccuracyStudy {
+
+    /** Off-axis azimuths as well as the axes and diagonals, where rays pass through cell centres. */
+    static final String DEFAULT_AZIMUTHS = "0,30,45,100,135,160,200,215,250,280,300,330";
+
+    private ShadowAccuracyStudy() {
+    }
+
+    public static void main(String[] args) throws IOException {
+        if (args.length == 0 || !(args[0].equals("measure") || args[0].equals("report"))) {
+            usage("expected 'measure' or 'report' first");
+        }
+        Map<String, String> opt = options(Arrays.copyOfRange(args, 1, args.length));
+        if (args[0].equals("measure")) {
+            measure(opt, String.join(" ", args));
+        } else {
+            AccuracyReport.write(Path.of(opt.getOrDefault("in", "docs/accuracy")),
+                    Path.of(opt.getOrDefault("images", "docs/images")),
+                    Path.of(opt.getOrDefault("tables", "docs/accuracy/tables.md")));
+        }
+    }
+
+    private static void measure(Map<String, String> opt, String command) throws IOException {
+        String name = opt.get("dem");
+        if (name == null) {
+            usage("measure needs --dem, one of " + StudyDem.NAMES);
+        }
+        double[] elevations = numbers(opt.getOrDefault("elevations", "2,5,10,20,45"), "--elevations");
+        double[] azimuths = numbers(opt.getOrDefault("azimuths", DEFAULT_AZIMUTHS), "--azimuths");
+        int sample = Integer.parseInt(opt.getOrDefault("sample", "200000"));
+        long seed = Long.parseLong(opt.getOrDefault("seed", "846"));
+        int threads = Integer.parseInt(opt.getOrDefault("threads",
+                Integer.toString(Runtime.getRuntime().availableProcessors())));
+        Path out = Path.of(opt.getOrDefault("out", "docs/accuracy"));
+        Files.createDirectories(out);
+        StudyDem dem = StudyDem.load(name, Path.of(opt.getOrDefault("testdata", "testdata")));
+        ForkJoinPool pool = new ForkJoinPool(threads);
+        try {
+            AccuracyMeasurement m = new AccuracyMeasurement(dem, pool, sample, seed);
+            System.err.printf(Locale.ROOT, "%s: %d×%d, %d cells evaluated (%s), %d threads%n", name,
+                    dem.dem().width(), dem.dem().height(), m.evaluatedCells(),
+                    m.exhaustive() ? "every valid cell" : "random sample, seed " + seed, threads);
+            m.warmUp();
+            for (double e : elevations) {
+                List<AccuracyRow> rows = new ArrayList<>();
+                for (double a : azimuths) {
+                    long t0 = System.nanoTime();
+                    List<AccuracyRow> r = m.measure(e, a);
+                    rows.addAll(r);
+                    System.err.printf(Locale.ROOT, "  e=%s a=%s: %.1f s; sweep %.3f %%, article march %.3f %%%n",
+                            e, a, (System.nanoTime() - t0) * 1e-9, 100 * find(r, StudyMethod.SWEEP).fraction(),
+                            100 * find(r, StudyMethod.MARCH_ARTICLE).fraction());
+                }
+                Path file = out.resolve(name + "-e" + fileNumber(e) + ".csv");
+                try (PrintWriter w = new PrintWriter(Files.newBufferedWriter(file, StandardCharsets.UTF_8))) {
+                    w.println("# " + command);
+                    w.println("# " + Instant.now() + ", " + System.getProperty("java.vm.name") + " "
+                            + System.getProperty("java.version") + ", " + threads + " threads, "
+                            + Runtime.getRuntime().availableProcessors() + " CPUs");
+                    w.println("# " + dem.description());
+                    w.println(AccuracyRow.HEADER);
+                    for (AccuracyRow r : rows) {
+                        w.println(r.toCsv());
+                    }
+                }
+                System.err.println("wrote " + file);
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    private static AccuracyRow find(List<AccuracyRow> rows, StudyMethod m) {
+        return rows.stream().filter(r -> r.method() == m).findFirst().orElseThrow();
+    }
+
+    private static String fileNumber(double d) {
+        return d == Math.rint(d) ? Long.toString((long) d) : Double.toString(d);
+    }
+
+    private static double[] numbers(String list, String option) {
+        try {
+            return Arrays.stream(list.split(",")).map(String::trim).mapToDouble(Double::parseDouble).toArray();
+        } catch (NumberFormatException e) {
+            usage(option + " must be a comma-separated list of numbers, got '" + list + "'");
+            return null;
+        }
+    }
+
+    private static Map<String, String> options(String[] args) {
+        Map<String, String> m = new LinkedHashMap<>();
+        for (int i = 0; i < args.length; i++) {
+            if (!args[i].startsWith("--") || i + 1 >= args.length) {
+                usage("expected --option value pairs, got '" + args[i] + "'");
+            }
+            m.put(args[i].substring(2), args[++i]);
+        }
+        return m;
+    }
+
+    private static void usage(String problem) {
+        System.err.println("ShadowAccuracyStudy: " + problem);
+        System.err.println("usage: ShadowAccuracyStudy measure --dem NAME [--elevations LIST] [--azimuths LIST]"
+                + " [--sample N|0] [--seed S] [--threads T] [--testdata DIR] [--out DIR]");
+        System.err.println("       ShadowAccuracyStudy report [--in DIR] [--images DIR] [--tables FILE]");
+        System.exit(2);
+    }
+}
