@@ -92,6 +92,18 @@ public final class DemLoader {
             return out;
         }
 
+        /** The output window cut out of {@code bytes} (row length {@code dem.width()}). */
+        public byte[] crop(byte[] bytes) {
+            if (hasNoHalo()) {
+                return bytes;
+            }
+            byte[] out = new byte[width * height];
+            for (int r = 0; r < height; r++) {
+                System.arraycopy(bytes, (row + r) * dem.width() + col, out, r * width, width);
+            }
+            return out;
+        }
+
         /** The output window cut out of {@code values} (row length {@code dem.width()}). */
         public float[] crop(float[] values) {
             if (hasNoHalo()) {

@@ -3,6 +3,8 @@ package io.github.jdem846.render;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.light.LightField;
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.shade.HillshadeMethod;
+import io.github.jdem846.shade.HillshadeOptions;
 import io.github.jdem846.shade.IlluminationStage;
 import io.github.jdem846.shadow.ShadowMask;
 import io.github.jdem846.tint.TintFunction;
@@ -99,6 +101,37 @@ public final class Renderer {
                         illuminate(dem, stage, light, col0, row0, w, h, tile);
                         for (int r = 0; r < h; r++) {
                             System.arraycopy(tile, r * w, out, (row0 + r) * width + col0, w);
+                        }
+                    });
+        } finally {
+            pool.shutdownNow();
+        }
+        return out;
+    }
+
+    /**
+     * The single-band gray hillshade product: {@link HillshadeMethod#gray} of every cell's illumination (0 =
+     * no-data), computed and converted tile by tile, so it equals {@code method.toGray(illumination(…))} without
+     * holding the float layer.
+     */
+    public byte[] hillshadeGray(Dem dem, HillshadeMethod method, HillshadeOptions options, LightField light,
+                                RenderProgress progress) throws InterruptedException {
+        Objects.requireNonNull(method, "method");
+        Objects.requireNonNull(options, "options");
+        IlluminationStage stage = method.stage(options);
+        int width = dem.width();
+        byte[] out = new byte[width * dem.height()];
+        ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
+        try {
+            new TileExecutor(pool, settings.tileSize()).forEachTile(width, dem.height(), "hillshade", progress,
+                    (col0, row0, w, h) -> {
+                        float[] tile = new float[w * h];
+                        illuminate(dem, stage, light, col0, row0, w, h, tile);
+                        for (int r = 0; r < h; r++) {
+                            int o = (row0 + r) * width + col0;
+                            for (int c = 0; c < w; c++) {
+                                out[o + c] = (byte) method.gray(tile[r * w + c], options);
+                            }
                         }
                     });
         } finally {
