@@ -53,18 +53,22 @@ public final class HillshadeCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
+        PhaseTimes times = new PhaseTimes();
         HillshadeMethod m = multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : HillshadeMethod.fromName(method);
         HillshadeOptions options = shading.options();
         DemLoader.Loaded loaded = input.load(DemLoader.Halo.uniform(1), false);
+        times.lap("read");
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
-        float[] illumination;
+        byte[] gray;
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
-            illumination = new Renderer(execution.settings()).illumination(loaded.dem(), m.stage(options),
-                    lighting.field(), loaded.area(), progress);
+            gray = new Renderer(execution.settings()).hillshadeGray(loaded.dem(), m, options, lighting.field(),
+                    loaded.area(), progress);
         }
-        byte[] gray = m.toGray(illumination, options);
+        times.lap("hillshade");
         output.writeGray(gray, CommandSupport.outputGeometry(loaded), 0.0, err);
+        times.lap("write");
+        times.print(verbose.isVerbose(), err);
         return 0;
     }
 }

@@ -68,6 +68,7 @@ public final class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
+        PhaseTimes times = new PhaseTimes();
         HillshadeMethod method = hillshade.toLowerCase(Locale.ROOT).equals("none") ? null
                 : HillshadeMethod.fromName(hillshade);
         ShadowAlgorithm algorithm = ShadowAlgorithm.parse(shadows);
@@ -80,6 +81,7 @@ public final class RenderCommand implements Callable<Integer> {
                     scene.shadowOptions(), err));
         }
         DemLoader.Loaded loaded = input.load(halo, scene.tint() != null);
+        times.lap("read");
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
         scene = scene.withLight(lighting.field()).withFade(lighting.fade()).withTintRange(loaded.fileStatistics());
@@ -87,7 +89,10 @@ public final class RenderCommand implements Callable<Integer> {
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
             image = new Renderer(execution.settings()).render(loaded.dem(), scene, loaded.area(), progress);
         }
+        times.lap("render");
         output.writeRgba(image.argb(), CommandSupport.outputGeometry(loaded), err);
+        times.lap("write");
+        times.print(verbose.isVerbose(), err);
         return 0;
     }
 }

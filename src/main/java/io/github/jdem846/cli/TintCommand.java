@@ -43,12 +43,17 @@ public final class TintCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
+        PhaseTimes times = new PhaseTimes();
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(null);
         DemLoader.Loaded loaded = input.load(DemLoader.Halo.NONE, scene.tint() != null);
+        times.lap("read");
         CommandSupport.printNotices(loaded, err);
         RenderedImage image = new Renderer(execution.settings()).render(loaded.dem(),
                 scene.withTintRange(loaded.fileStatistics()), loaded.area(), RenderProgress.NONE);
+        times.lap("tint");
         output.writeRgba(image.argb(), CommandSupport.outputGeometry(loaded), err);
+        times.lap("write");
+        times.print(verbose.isVerbose(), err);
         return 0;
     }
 }

@@ -3,6 +3,8 @@ package io.github.jdem846.render;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.light.LightField;
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.shade.HillshadeMethod;
+import io.github.jdem846.shade.HillshadeOptions;
 import io.github.jdem846.shade.IlluminationStage;
 import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.ShadowMask;
@@ -121,6 +123,38 @@ public final class Renderer {
                         illuminate(dem, stage, light, area.col() + c0, area.row() + r0, w, h, tile);
                         for (int r = 0; r < h; r++) {
                             System.arraycopy(tile, r * w, out, (r0 + r) * width + c0, w);
+                        }
+                    });
+        } finally {
+            pool.shutdownNow();
+        }
+        return out;
+    }
+
+    /**
+     * The single-band gray hillshade product: {@link HillshadeMethod#gray} of every cell's illumination (0 =
+     * no-data), computed and converted tile by tile, so it equals {@code method.toGray(illumination(…))} without
+     * holding the float layer; of the cells of {@code area} only (row length {@code area.width()}).
+     */
+    public byte[] hillshadeGray(Dem dem, HillshadeMethod method, HillshadeOptions options, LightField light,
+                                CellWindow area, RenderProgress progress) throws InterruptedException {
+        Objects.requireNonNull(method, "method");
+        Objects.requireNonNull(options, "options");
+        requireInside(area, dem);
+        IlluminationStage stage = method.stage(options);
+        int width = area.width();
+        byte[] out = new byte[width * area.height()];
+        ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
+        try {
+            new TileExecutor(pool, settings.tileSize()).forEachTile(width, area.height(), "hillshade", progress,
+                    (c0, r0, w, h) -> {
+                        float[] tile = new float[w * h];
+                        illuminate(dem, stage, light, area.col() + c0, area.row() + r0, w, h, tile);
+                        for (int r = 0; r < h; r++) {
+                            int o = (r0 + r) * width + c0;
+                            for (int c = 0; c < w; c++) {
+                                out[o + c] = (byte) method.gray(tile[r * w + c], options);
+                            }
                         }
                     });
         } finally {

@@ -54,6 +54,23 @@ class RendererTest {
     }
 
     @Test
+    void grayHillshadeIsTheGrayOfTheIlluminationForAnyTiling() throws InterruptedException {
+        io.github.jdem846.shade.HillshadeOptions options = io.github.jdem846.shade.HillshadeOptions.DEFAULTS;
+        io.github.jdem846.light.LightField light = io.github.jdem846.light.LightField.uniform(
+                new LightDirection(315, 45));
+        for (HillshadeMethod method : HillshadeMethod.values()) {
+            float[] dot = new Renderer(new RenderSettings(1, 4096)).illumination(LUX, method.stage(options), light,
+                    RenderProgress.NONE);
+            byte[] expected = method.toGray(dot, options);
+            for (int tile : new int[] {16, 33, 4096}) {
+                byte[] gray = new Renderer(new RenderSettings(2, tile)).hillshadeGray(LUX, method, options, light,
+                        io.github.jdem846.shadow.CellWindow.whole(LUX.width(), LUX.height()), RenderProgress.NONE);
+                assertArrayEquals(expected, gray, method + ", tile " + tile);
+            }
+        }
+    }
+
+    @Test
     void eachPixelIsTheCompositionOfTheStages() throws InterruptedException {
         LightDirection light = new LightDirection(300, 20);
         Scene scene = Scene.defaults().withShadows(ShadowAlgorithm.MARCH).withLight(light);
