@@ -40,6 +40,25 @@ public final class Main implements Runnable {
     }
 
     public static void main(String[] args) {
+        if (!java.util.Arrays.asList(args).contains("--verbose")) {
+            quietLibraryLogs();
+        }
         System.exit(commandLine().execute(args));
+    }
+
+    /**
+     * Apache SIS reports through java.util.logging (e.g. "SIS_DATA is not set", WKT elements it ignores); what
+     * matters of that reaches the user as our own notices, so the CLI shows SIS's records only with --verbose.
+     * Done through the LogManager's configuration, which also holds for loggers created later.
+     */
+    private static void quietLibraryLogs() {
+        try {
+            java.util.logging.LogManager.getLogManager().updateConfiguration(
+                    new java.io.ByteArrayInputStream("org.apache.sis.level = OFF\n".getBytes(
+                            java.nio.charset.StandardCharsets.ISO_8859_1)),
+                    key -> (old, now) -> now != null ? now : old);
+        } catch (java.io.IOException e) {
+            // keep the default configuration
+        }
     }
 }
