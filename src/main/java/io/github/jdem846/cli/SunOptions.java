@@ -11,7 +11,10 @@ import io.github.jdem846.sun.TwilightFade;
 import io.github.jdem846.sun.ZonedTimeParser;
 import java.io.PrintWriter;
 import java.util.Locale;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
 
 /**
  * The light: {@code --sun-azimuth}/{@code --sun-elevation} (the original's defaults 320° and 25°), or the real sun
@@ -19,13 +22,33 @@ import picocli.CommandLine.Option;
  */
 public final class SunOptions {
 
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec command;
+
+    /** Not a number (NaN, ±Infinity) is bad usage like "abc" (exit 2); a number out of range fails later (exit 1). */
+    Double azimuth;
+
+    Double elevation;
+
     @Option(names = {"--sun-azimuth", "--azimuth"}, paramLabel = "DEG",
             description = "Sun azimuth, degrees clockwise from north (any value; reduced to [0, 360)). Default: 320.")
-    Double azimuth;
+    void azimuth(double degrees) {
+        if (!Double.isFinite(degrees)) {
+            throw new ParameterException(command.commandLine(), "--sun-azimuth must be a finite number of degrees"
+                    + " (any value, e.g. -720 or 250), got " + degrees);
+        }
+        azimuth = degrees;
+    }
 
     @Option(names = {"--sun-elevation", "--altitude"}, paramLabel = "DEG",
             description = "Sun elevation above the horizon in degrees, -90..90 (≤ 0: no direct light). Default: 25.")
-    Double elevation;
+    void elevation(double degrees) {
+        if (!Double.isFinite(degrees)) {
+            throw new ParameterException(command.commandLine(), "--sun-elevation must be a number of degrees"
+                    + " between -90 and 90, got " + degrees);
+        }
+        elevation = degrees;
+    }
 
     @Option(names = "--sun-time", paramLabel = "TIME",
             description = "Compute the sun for this instant instead (ISO-8601 with offset or zone, e.g. "

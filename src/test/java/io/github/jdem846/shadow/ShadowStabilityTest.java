@@ -167,4 +167,110 @@ class ShadowStabilityTest {
         assertEquals(expected, last - 5, 1.5, algorithm + ": shadow length in cells at 78° N");
         assertTrue(expected > 20, "the case must be one where flat degrees would fail");
     }
+
+    @ParameterizedTest
+    @EnumSource(value = ShadowAlgorithm.class, names = {"MARCH", "SWEEP", "EXACT"})
+    void aSpikeShadesOnlyItsLeeAtEveryExtremeSun(ShadowAlgorithm algorithm) {
+        // 500 m spike on flat ground, 30 m cells. At every azimuth of the list and every sun above the horizon, a
+        // shadowed cell lies away from the sun, within two cells sideways of the spike's axis (block or bilinear
+        // skirt, plus the sweep's line spacing) and no farther than h/tan e + 2 cells; at 89.99° nothing is shaded
+        // (the shadow would be 0.09 m long), at 45° something is. With soft shadows flat ground ahead already hides
+        // the part of the sun's disk below 0° (half of it as e → 0): only more than that counts as the spike's.
+        Dem spike = ShadowTestDems.spike(15, 15, 30, 7, 7, 500f);
+        for (boolean soft : new boolean[] {false, true}) {
+            ShadowOptions opt = ShadowOptions.DEFAULTS.withSoftShadows(soft);
+            for (double e : new double[] {1e-6, 0.01, 2, 45, 89.99}) {
+                for (double az : AZIMUTHS) {
+                    ShadowMask m = algorithm.compute(spike, new LightDirection(az, e), opt, pool);
+                    double a = Math.toRadians(LightDirection.normalizeAzimuth(az));
+                    double lowerLimb = e - (soft ? 0.265 : 0);
+                    double reach = lowerLimb > 0 ? 500 / Math.tan(Math.toRadians(lowerLimb)) + 60
+                            : Double.POSITIVE_INFINITY;
+                    double ground = soft ? SunDisk.hiddenFraction(e, 0, 0.265) + 1e-6 : 0;
+                    String what = algorithm + " soft=" + soft + " e=" + e + " az=" + az;
+                    for (int r = 0; r < 15; r++) {
+                        for (int c = 0; c < 15; c++) {
+                            if (m.get(c, r) <= ground || (c == 7 && r == 7)) {
+                                continue;
+                            }
+                            double east = (c - 7) * 30.0;
+                            double north = (7 - r) * 30.0;
+                            double along = -(east * Math.sin(a) + north * Math.cos(a));
+                            double across = Math.abs(east * Math.cos(a) - north * Math.sin(a));
+                            String at = what + " cell (" + c + ", " + r + ") = " + m.get(c, r);
+                            assertTrue(along > -30 && along <= reach && across <= 60 + 1e-9, at);
+                        }
+                    }
+                    if (e == 89.99) {
+                        assertEquals(0, m.shadowedCount(), what);
+                    } else if (e == 45) {
+                        assertTrue(m.shadowedCount() > 0, what + ": a 500 m spike casts a 500 m shadow");
+                    }
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(value = ShadowAlgorithm.class, names = {"MARCH", "SWEEP", "EXACT"})
+    void aNoDataStripeAcrossTheRaysDoesNotStopTheShadow(ShadowAlgorithm algorithm) {
+        // a 615 m wall one cell wide at column 30, no-data in columns 20–22, flat ground at 0, 30 m cells; sun in
+        // the east (and, mirrored, in the west) at 45°: the article's test 3 keeps marching through no-data, so
+        // the ground beyond the stripe is still shaded where 615 > distance·tan 45° (columns 10–19 and 23–29)
+        int w = 41;
+        int h = 5;
+        for (boolean mirrored : new boolean[] {false, true}) {
+            float[] v = new float[w * h];
+            for (int r = 0; r < h; r++) {
+                for (int c = 0; c < w; c++) {
+                    int x = mirrored ? w - 1 - c : c;
+                    v[r * w + c] = x == 30 ? 615f : (x >= 20 && x <= 22 ? Float.NaN : 0f);
+                }
+            }
+            Dem dem = ShadowTestDems.metric(w, h, 30, v);
+            ShadowMask m = algorithm.compute(dem, new LightDirection(mirrored ? 270 : 90, 45),
+                    ShadowOptions.DEFAULTS, pool);
+            for (int r = 0; r < h; r++) {
+                for (int c = 0; c < w; c++) {
+                    int x = mirrored ? w - 1 - c : c;
+                    boolean shaded = x >= 10 && x < 30 && !(x >= 20 && x <= 22);
+                    assertEquals(shaded ? 1f : 0f, m.get(c, r), algorithm + " mirrored=" + mirrored + " cell (" + c
+                            + ", " + r + ")");
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(value = ShadowAlgorithm.class, names = {"MARCH", "SWEEP", "EXACT"})
+    void flatGroundAtThePoleAndOnOneDegreeCellsIsLit(ShadowAlgorithm algorithm) {
+        Dem pole = ShadowTestDems.geographic(10, 8, 0, 90, 0.1 / 8, new float[80]);
+        Dem degrees = ShadowTestDems.geographic(10, 10, 5, 50, 1.0, new float[100]);
+        for (Dem dem : new Dem[] {pole, degrees}) {
+            for (double e : new double[] {1e-6, 0.01, 2, 45, 89.99}) {
+                for (double az : AZIMUTHS) {
+                    for (boolean soft : new boolean[] {false, true}) {
+                        ShadowMask m = algorithm.compute(dem, new LightDirection(az, e),
+                                ShadowOptions.DEFAULTS.withSoftShadows(soft), pool);
+                        float max = 0;
+                        for (float x : m.backingArray()) {
+                            max = Math.max(max, x);
+                        }
+                        // soft: with the sun's centre at e the flat horizon (0°) hides the part of the disk below
+                        // it, at most half of it when e → 0. The article's step (eq. 9, march) is the hypotenuse
+                        // of the two cell sizes: on the polar rows (≈ 1390 m × 0–3 m cells) it leaves the grid in
+                        // one step and sees no ground ahead, so it may hide less, never more.
+                        double expected = soft ? SunDisk.hiddenFraction(e, 0, 0.265) : 0;
+                        String what = algorithm + " soft=" + soft + " e=" + e + " az=" + az + " on "
+                                + dem.geometry();
+                        if (algorithm == ShadowAlgorithm.MARCH && dem == pole) {
+                            assertTrue(max <= expected + 1e-6, what + ": " + max);
+                        } else {
+                            assertEquals(expected, max, 1e-6, what);
+                        }
+                    }
+                }
+            }
+        }
+    }
 }
