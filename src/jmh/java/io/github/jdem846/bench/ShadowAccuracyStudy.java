@@ -26,7 +26,10 @@ import java.util.concurrent.ForkJoinPool;
  * </pre>
  * {@code measure} writes one CSV per DEM and elevation ({@code OUT/DEM-eELEVATION.csv}), so a long study runs in
  * pieces; {@code report} reads every CSV in {@code --in} and writes the Markdown tables and the work-precision
- * plots. {@code --sample 0} compares every valid cell.
+ * plots. {@code --sample 0} compares every valid cell. {@code diagnose} tells, for one method's disagreements,
+ * how many lie on exact's shadow edges and how far the sun must move for exact to agree
+ * ({@link AccuracyDiagnosis}), and can draw a map of them; {@code converge} compares {@code exact} with finer
+ * marches ({@link ReferenceConvergence}).
  */
 public final class ShadowAccuracyStudy {
 
@@ -37,12 +40,16 @@ public final class ShadowAccuracyStudy {
     }
 
     public static void main(String[] args) throws IOException {
-        if (args.length == 0 || !(args[0].equals("measure") || args[0].equals("report"))) {
-            usage("expected 'measure' or 'report' first");
+        if (args.length == 0 || !List.of("measure", "report", "diagnose", "converge").contains(args[0])) {
+            usage("expected 'measure', 'report', 'diagnose' or 'converge' first");
         }
         Map<String, String> opt = options(Arrays.copyOfRange(args, 1, args.length));
         if (args[0].equals("measure")) {
             measure(opt, String.join(" ", args));
+        } else if (args[0].equals("diagnose")) {
+            diagnose(opt, String.join(" ", args));
+        } else if (args[0].equals("converge")) {
+            converge(opt, String.join(" ", args));
         } else {
             AccuracyReport.write(Path.of(opt.getOrDefault("in", "docs/accuracy")),
                     Path.of(opt.getOrDefault("images", "docs/images")),
@@ -100,6 +107,84 @@ public final class ShadowAccuracyStudy {
         }
     }
 
+    private static void diagnose(Map<String, String> opt, String command) throws IOException {
+        String name = opt.get("dem");
+        if (name == null) {
+            usage("diagnose needs --dem, one of " + StudyDem.NAMES);
+        }
+        StudyMethod method = StudyMethod.ofKey(opt.getOrDefault("method", "sweep"));
+        double[] elevations = numbers(opt.getOrDefault("elevations", "5,20"), "--elevations");
+        double[] azimuths = numbers(opt.getOrDefault("azimuths", DEFAULT_AZIMUTHS), "--azimuths");
+        int sample = Integer.parseInt(opt.getOrDefault("sample", "200000"));
+        long seed = Long.parseLong(opt.getOrDefault("seed", "846"));
+        String mapAzimuth = opt.get("map-azimuth");
+        Path images = Path.of(opt.getOrDefault("images", "docs/images"));
+        Path out = Path.of(opt.getOrDefault("out", "docs/accuracy/diagnosis-" + name + "-" + method.key() + ".md"));
+        StudyDem dem = StudyDem.load(name, Path.of(opt.getOrDefault("testdata", "testdata")));
+        int[] valid = AccuracyMeasurement.validCells(dem.dem());
+        int[] cells = sample <= 0 || sample >= valid.length ? valid
+                : AccuracyMeasurement.sample(valid, sample, seed);
+        ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        StringBuilder md = new StringBuilder();
+        md.append("<!-- ").append(command).append(" -->\n");
+        md.append(String.format(Locale.ROOT, "%s vs exact on %s (%,d cells%s)%n%n", method.label,
+                dem.description(), cells.length, cells.length == valid.length ? ", every valid cell"
+                        : ", random sample, seed " + seed));
+        md.append(AccuracyDiagnosis.header()).append('\n');
+        try {
+            AccuracyDiagnosis d = new AccuracyDiagnosis(dem.dem(), pool);
+            for (double e : elevations) {
+                for (double a : azimuths) {
+                    Path map = mapAzimuth != null && Double.parseDouble(mapAzimuth) == a
+                            ? images.resolve("accuracy-diff-" + name + "-" + method.key() + "-e" + fileNumber(e)
+                                    + "-a" + fileNumber(a) + ".png")
+                            : null;
+                    String row = d.row(method, e, a, cells, map);
+                    md.append(row).append('\n');
+                    System.err.println(row);
+                }
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+        Files.writeString(out, md, StandardCharsets.UTF_8);
+        System.err.println("wrote " + out);
+    }
+
+    private static void converge(Map<String, String> opt, String command) throws IOException {
+        String name = opt.get("dem");
+        if (name == null) {
+            usage("converge needs --dem, one of " + StudyDem.NAMES);
+        }
+        double[] elevations = numbers(opt.getOrDefault("elevations", "2,5,20"), "--elevations");
+        double[] azimuths = numbers(opt.getOrDefault("azimuths", "100,160,250,300"), "--azimuths");
+        int sample = Integer.parseInt(opt.getOrDefault("sample", "20000"));
+        long seed = Long.parseLong(opt.getOrDefault("seed", "846"));
+        Path out = Path.of(opt.getOrDefault("out", "docs/accuracy/convergence-" + name + ".md"));
+        StudyDem dem = StudyDem.load(name, Path.of(opt.getOrDefault("testdata", "testdata")));
+        int[] valid = AccuracyMeasurement.validCells(dem.dem());
+        int[] cells = sample <= 0 || sample >= valid.length ? valid
+                : AccuracyMeasurement.sample(valid, sample, seed);
+        ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        StringBuilder md = new StringBuilder("<!-- " + command + " -->\n");
+        md.append(String.format(Locale.ROOT, "exact vs finer bilinear marches on %s (%,d cells)%n%n",
+                dem.description(), cells.length));
+        md.append(ReferenceConvergence.header()).append('\n');
+        try {
+            for (double e : elevations) {
+                for (double a : azimuths) {
+                    String row = ReferenceConvergence.row(dem.dem(), pool, e, a, cells);
+                    md.append(row).append('\n');
+                    System.err.println(row);
+                }
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+        Files.writeString(out, md, StandardCharsets.UTF_8);
+        System.err.println("wrote " + out);
+    }
+
     private static AccuracyRow find(List<AccuracyRow> rows, StudyMethod m) {
         return rows.stream().filter(r -> r.method() == m).findFirst().orElseThrow();
     }
@@ -133,6 +218,10 @@ public final class ShadowAccuracyStudy {
         System.err.println("usage: ShadowAccuracyStudy measure --dem NAME [--elevations LIST] [--azimuths LIST]"
                 + " [--sample N|0] [--seed S] [--threads T] [--testdata DIR] [--out DIR]");
         System.err.println("       ShadowAccuracyStudy report [--in DIR] [--images DIR] [--tables FILE]");
+        System.err.println("       ShadowAccuracyStudy diagnose --dem NAME [--method KEY] [--elevations LIST]"
+                + " [--azimuths LIST] [--sample N|0] [--map-azimuth A] [--images DIR] [--out FILE]");
+        System.err.println("       ShadowAccuracyStudy converge --dem NAME [--elevations LIST] [--azimuths LIST]"
+                + " [--sample N|0] [--out FILE]");
         System.exit(2);
     }
 }
