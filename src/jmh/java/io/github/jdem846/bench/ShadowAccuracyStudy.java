@@ -29,7 +29,8 @@ import java.util.concurrent.ForkJoinPool;
  * plots. {@code --sample 0} compares every valid cell. {@code diagnose} tells, for one method's disagreements,
  * how many lie on exact's shadow edges and how far the sun must move for exact to agree
  * ({@link AccuracyDiagnosis}), and can draw a map of them; {@code converge} compares {@code exact} with finer
- * marches ({@link ReferenceConvergence}).
+ * marches ({@link ReferenceConvergence}); {@code rowsweep} measures the row-by-row re-interpolating sweep the issue
+ * warns about ({@link RowByRowSweep}) next to ours.
  */
 public final class ShadowAccuracyStudy {
 
@@ -40,8 +41,8 @@ public final class ShadowAccuracyStudy {
     }
 
     public static void main(String[] args) throws IOException {
-        if (args.length == 0 || !List.of("measure", "report", "diagnose", "converge").contains(args[0])) {
-            usage("expected 'measure', 'report', 'diagnose' or 'converge' first");
+        if (args.length == 0 || !List.of("measure", "report", "diagnose", "converge", "rowsweep").contains(args[0])) {
+            usage("expected 'measure', 'report', 'diagnose', 'converge' or 'rowsweep' first");
         }
         Map<String, String> opt = options(Arrays.copyOfRange(args, 1, args.length));
         if (args[0].equals("measure")) {
@@ -50,6 +51,8 @@ public final class ShadowAccuracyStudy {
             diagnose(opt, String.join(" ", args));
         } else if (args[0].equals("converge")) {
             converge(opt, String.join(" ", args));
+        } else if (args[0].equals("rowsweep")) {
+            rowSweep(opt, String.join(" ", args));
         } else {
             AccuracyReport.write(Path.of(opt.getOrDefault("in", "docs/accuracy")),
                     Path.of(opt.getOrDefault("images", "docs/images")),
@@ -185,6 +188,68 @@ public final class ShadowAccuracyStudy {
         System.err.println("wrote " + out);
     }
 
+    private static void rowSweep(Map<String, String> opt, String command) throws IOException {
+        String name = opt.get("dem");
+        if (name == null) {
+            usage("rowsweep needs --dem, one of " + StudyDem.NAMES);
+        }
+        double[] elevations = numbers(opt.getOrDefault("elevations", "5,20"), "--elevations");
+        double[] azimuths = numbers(opt.getOrDefault("azimuths", "90," + DEFAULT_AZIMUTHS), "--azimuths");
+        Path out = Path.of(opt.getOrDefault("out", "docs/accuracy/rowsweep-" + name + ".md"));
+        StudyDem dem = StudyDem.load(name, Path.of(opt.getOrDefault("testdata", "testdata")));
+        int[] valid = AccuracyMeasurement.validCells(dem.dem());
+        int sample = Integer.parseInt(opt.getOrDefault("sample", "0"));
+        long seed = Long.parseLong(opt.getOrDefault("seed", "846"));
+        int[] cells = sample <= 0 || sample >= valid.length ? valid
+                : AccuracyMeasurement.sample(valid, sample, seed);
+        ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        StringBuilder md = new StringBuilder("<!-- " + command + " -->\n");
+        md.append(String.format(Locale.ROOT, "%% of cells ≠ exact on %s (%s, %,d)%n%n", dem.description(),
+                cells.length == valid.length ? "every valid cell" : "random sample, seed " + seed, cells.length));
+        md.append("| elev. | azim. | row-by-row sweep | sweep (default) | sweep, no first-cell test "
+                + "| march 1 cell, bilinear | row-by-row = march 1 cell? |\n|---:|---:|---:|---:|---:|---:|---|\n");
+        try {
+            for (double e : elevations) {
+                for (double a : azimuths) {
+                    io.github.jdem846.light.LightDirection light = new io.github.jdem846.light.LightDirection(a, e);
+                    float[] exact = StudyMethod.EXACT.algorithm.computeCells(dem.dem(), light,
+                            StudyMethod.EXACT.options, pool, cells);
+                    float[] rows = RowByRowSweep.compute(dem.dem(), light);
+                    float[] sweep = StudyMethod.SWEEP.algorithm.compute(dem.dem(), light, StudyMethod.SWEEP.options,
+                            pool).backingArray();
+                    float[] noFirst = StudyMethod.SWEEP_NO_FIRST_CELL.algorithm.compute(dem.dem(), light,
+                            StudyMethod.SWEEP_NO_FIRST_CELL.options, pool).backingArray();
+                    float[] march1 = StudyMethod.MARCH_1_BILINEAR.algorithm.computeCells(dem.dem(), light,
+                            StudyMethod.MARCH_1_BILINEAR.options, pool, cells);
+                    long dr = 0;
+                    long ds = 0;
+                    long dn = 0;
+                    long dm = 0;
+                    long rm = 0;
+                    for (int q = 0; q < cells.length; q++) {
+                        boolean x = exact[q] >= 0.5f;
+                        int c = cells[q];
+                        dr += (rows[c] >= 0.5f) != x ? 1 : 0;
+                        ds += (sweep[c] >= 0.5f) != x ? 1 : 0;
+                        dn += (noFirst[c] >= 0.5f) != x ? 1 : 0;
+                        dm += (march1[q] >= 0.5f) != x ? 1 : 0;
+                        rm += (rows[c] >= 0.5f) != (march1[q] >= 0.5f) ? 1 : 0;
+                    }
+                    double n = cells.length / 100.0;
+                    String row = String.format(Locale.ROOT, "| %s | %s | %.3f | %.3f | %.3f | %.3f | %s |",
+                            fileNumber(e), fileNumber(a), dr / n, ds / n, dn / n, dm / n,
+                            rm == 0 ? "yes" : String.format(Locale.ROOT, "no (%.3f %% differ)", rm / n));
+                    md.append(row).append('\n');
+                    System.err.println(row);
+                }
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+        Files.writeString(out, md, StandardCharsets.UTF_8);
+        System.err.println("wrote " + out);
+    }
+
     private static AccuracyRow find(List<AccuracyRow> rows, StudyMethod m) {
         return rows.stream().filter(r -> r.method() == m).findFirst().orElseThrow();
     }
@@ -221,6 +286,8 @@ public final class ShadowAccuracyStudy {
         System.err.println("       ShadowAccuracyStudy diagnose --dem NAME [--method KEY] [--elevations LIST]"
                 + " [--azimuths LIST] [--sample N|0] [--map-azimuth A] [--images DIR] [--out FILE]");
         System.err.println("       ShadowAccuracyStudy converge --dem NAME [--elevations LIST] [--azimuths LIST]"
+                + " [--sample N|0] [--out FILE]");
+        System.err.println("       ShadowAccuracyStudy rowsweep --dem NAME [--elevations LIST] [--azimuths LIST]"
                 + " [--sample N|0] [--out FILE]");
         System.exit(2);
     }
