@@ -70,6 +70,12 @@ final class AccuracyPlot {
         panels.add(legendPanel(dem));
         int cols = Math.min(3, panels.size());
         int rows = (panels.size() + cols - 1) / cols;
+        while (panels.size() < rows * cols) {
+            XYChart blank = legendPanel("");
+            blank.getStyler().setLegendVisible(false);
+            blank.getStyler().setChartTitleVisible(false);
+            panels.add(blank);
+        }
         Path file = images.resolve("accuracy-" + dem + ".png");
         BitmapEncoder.saveBitmap(panels, rows, cols, file.toString(), BitmapEncoder.BitmapFormat.PNG);
         return file;

@@ -93,13 +93,19 @@ final class AccuracyReport {
         md.append("### ").append(dem).append(": ").append(StudyDem.describe(dem)).append("\n\n");
         md.append(String.format(Locale.ROOT, "%,d cells, %s; azimuths %s.%n%n", any.gridCells(),
                 any.exhaustive() ? String.format(Locale.ROOT, "every valid cell compared (%,d)", any.evalCells())
-                        : String.format(Locale.ROOT, "%,d valid cells sampled at random (± = binomial standard "
-                                + "error of the mean)", any.evalCells()),
+                        : String.format(Locale.ROOT, "%,d valid cells sampled at random (± = standard error from "
+                                + "the sample: mean of the azimuths' binomial errors)", any.evalCells()),
                 String.join(", ", az.stream().map(AccuracyPlot::fmt).toList())));
         md.append("% of cells ≠ exact, mean over azimuths (worst azimuth):\n\n| method |");
         el.forEach(e -> md.append(' ').append(AccuracyPlot.fmt(e)).append("° |"));
         md.append("\n|---|");
         el.forEach(e -> md.append("---:|"));
+        md.append('\n');
+        md.append("| *cells in shadow according to exact* |");
+        for (double e : el) {
+            AccuracySummary.Cell c = s.cell(dem, e, StudyMethod.EXACT);
+            md.append(' ').append(c == null ? "–" : "*" + pct(100 * c.shadowFraction()) + "*").append(" |");
+        }
         md.append('\n');
         for (StudyMethod m : StudyMethod.values()) {
             if (m == StudyMethod.EXACT) {

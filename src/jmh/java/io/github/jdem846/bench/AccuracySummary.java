@@ -23,16 +23,24 @@ record AccuracySummary(List<AccuracyRow> rows) {
      * One DEM, elevation and method over all its azimuths.
      *
      * @param meanFraction mean disagreeing fraction over the azimuths
-     * @param meanSe       standard error of that mean (0 when every cell was compared)
+     * @param meanSe       standard error of that mean (0 when every cell was compared): the mean of the azimuths'
+     *                     binomial standard errors, an upper bound, since every azimuth uses the same sample
      * @param worst        the row of the azimuth with the largest disagreement
      * @param meanSeconds  mean over the azimuths of the fastest run time
      * @param timedCells   cells per timed run
      * @param azimuths     number of azimuths
      * @param falseShadow  cells over all azimuths that the method shades and exact lights
      * @param falseLit     cells over all azimuths that the method lights and exact shades
+     * @param exactShadow  cells over all azimuths in shadow according to exact
+     * @param evalCells    cells compared over all azimuths
      */
     record Cell(double meanFraction, double meanSe, AccuracyRow worst, double meanSeconds, long timedCells,
-                int azimuths, long falseShadow, long falseLit) {
+                int azimuths, long falseShadow, long falseLit, long exactShadow, long evalCells) {
+
+        /** Share of the compared cells in shadow according to exact, over all azimuths. */
+        double shadowFraction() {
+            return (double) exactShadow / evalCells;
+        }
 
         double mcellsPerSecond() {
             return timedCells / meanSeconds / 1e6;
@@ -98,23 +106,27 @@ record AccuracySummary(List<AccuracyRow> rows) {
             return null;
         }
         double sum = 0;
-        double var = 0;
+        double se = 0;
         double secs = 0;
         long fs = 0;
         long fl = 0;
+        long xs = 0;
+        long ev = 0;
         AccuracyRow worst = rs.get(0);
         for (AccuracyRow r : rs) {
             sum += r.fraction();
-            var += r.standardError() * r.standardError();
+            se += r.standardError();
             secs += r.seconds();
             fs += r.falseShadow();
             fl += r.falseLit();
+            xs += r.exactShadow();
+            ev += r.evalCells();
             if (r.fraction() > worst.fraction()) {
                 worst = r;
             }
         }
         int n = rs.size();
-        return new Cell(sum / n, Math.sqrt(var) / n, worst, secs / n, rs.get(0).timedCells(), n, fs, fl);
+        return new Cell(sum / n, se / n, worst, secs / n, rs.get(0).timedCells(), n, fs, fl, xs, ev);
     }
 
     /** Per-azimuth rows of one DEM, elevation and method, by azimuth. */

@@ -26,7 +26,11 @@ import java.util.concurrent.ForkJoinPool;
  * </pre>
  * {@code measure} writes one CSV per DEM and elevation ({@code OUT/DEM-eELEVATION.csv}), so a long study runs in
  * pieces; {@code report} reads every CSV in {@code --in} and writes the Markdown tables and the work-precision
- * plots. {@code --sample 0} compares every valid cell.
+ * plots. {@code --sample 0} compares every valid cell. {@code diagnose} tells, for one method's disagreements,
+ * how many lie on exact's shadow edges and how far the sun must move for exact to agree
+ * ({@link AccuracyDiagnosis}), and can draw a map of them; {@code converge} compares {@code exact} with finer
+ * marches ({@link ReferenceConvergence}); {@code rowsweep} measures the row-by-row re-interpolating sweep the issue
+ * warns about ({@link RowByRowSweep}) next to ours.
  */
 public final class ShadowAccuracyStudy {
 
@@ -37,12 +41,18 @@ public final class ShadowAccuracyStudy {
     }
 
     public static void main(String[] args) throws IOException {
-        if (args.length == 0 || !(args[0].equals("measure") || args[0].equals("report"))) {
-            usage("expected 'measure' or 'report' first");
+        if (args.length == 0 || !List.of("measure", "report", "diagnose", "converge", "rowsweep").contains(args[0])) {
+            usage("expected 'measure', 'report', 'diagnose', 'converge' or 'rowsweep' first");
         }
         Map<String, String> opt = options(Arrays.copyOfRange(args, 1, args.length));
         if (args[0].equals("measure")) {
             measure(opt, String.join(" ", args));
+        } else if (args[0].equals("diagnose")) {
+            diagnose(opt, String.join(" ", args));
+        } else if (args[0].equals("converge")) {
+            converge(opt, String.join(" ", args));
+        } else if (args[0].equals("rowsweep")) {
+            rowSweep(opt, String.join(" ", args));
         } else {
             AccuracyReport.write(Path.of(opt.getOrDefault("in", "docs/accuracy")),
                     Path.of(opt.getOrDefault("images", "docs/images")),
@@ -100,6 +110,146 @@ public final class ShadowAccuracyStudy {
         }
     }
 
+    private static void diagnose(Map<String, String> opt, String command) throws IOException {
+        String name = opt.get("dem");
+        if (name == null) {
+            usage("diagnose needs --dem, one of " + StudyDem.NAMES);
+        }
+        StudyMethod method = StudyMethod.ofKey(opt.getOrDefault("method", "sweep"));
+        double[] elevations = numbers(opt.getOrDefault("elevations", "5,20"), "--elevations");
+        double[] azimuths = numbers(opt.getOrDefault("azimuths", DEFAULT_AZIMUTHS), "--azimuths");
+        int sample = Integer.parseInt(opt.getOrDefault("sample", "200000"));
+        long seed = Long.parseLong(opt.getOrDefault("seed", "846"));
+        String mapAzimuth = opt.get("map-azimuth");
+        Path images = Path.of(opt.getOrDefault("images", "docs/images"));
+        Path out = Path.of(opt.getOrDefault("out", "docs/accuracy/diagnosis-" + name + "-" + method.key() + ".md"));
+        StudyDem dem = StudyDem.load(name, Path.of(opt.getOrDefault("testdata", "testdata")));
+        int[] valid = AccuracyMeasurement.validCells(dem.dem());
+        int[] cells = sample <= 0 || sample >= valid.length ? valid
+                : AccuracyMeasurement.sample(valid, sample, seed);
+        ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        StringBuilder md = new StringBuilder();
+        md.append("<!-- ").append(command).append(" -->\n");
+        md.append(String.format(Locale.ROOT, "%s vs exact on %s (%,d cells%s)%n%n", method.label,
+                dem.description(), cells.length, cells.length == valid.length ? ", every valid cell"
+                        : ", random sample, seed " + seed));
+        md.append(AccuracyDiagnosis.header()).append('\n');
+        try {
+            AccuracyDiagnosis d = new AccuracyDiagnosis(dem.dem(), pool);
+            for (double e : elevations) {
+                for (double a : azimuths) {
+                    Path map = mapAzimuth != null && Double.parseDouble(mapAzimuth) == a
+                            ? images.resolve("accuracy-diff-" + name + "-" + method.key() + "-e" + fileNumber(e)
+                                    + "-a" + fileNumber(a) + ".png")
+                            : null;
+                    String row = d.row(method, e, a, cells, map);
+                    md.append(row).append('\n');
+                    System.err.println(row);
+                }
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+        Files.writeString(out, md, StandardCharsets.UTF_8);
+        System.err.println("wrote " + out);
+    }
+
+    private static void converge(Map<String, String> opt, String command) throws IOException {
+        String name = opt.get("dem");
+        if (name == null) {
+            usage("converge needs --dem, one of " + StudyDem.NAMES);
+        }
+        double[] elevations = numbers(opt.getOrDefault("elevations", "2,5,20"), "--elevations");
+        double[] azimuths = numbers(opt.getOrDefault("azimuths", "100,160,250,300"), "--azimuths");
+        int sample = Integer.parseInt(opt.getOrDefault("sample", "20000"));
+        long seed = Long.parseLong(opt.getOrDefault("seed", "846"));
+        Path out = Path.of(opt.getOrDefault("out", "docs/accuracy/convergence-" + name + ".md"));
+        StudyDem dem = StudyDem.load(name, Path.of(opt.getOrDefault("testdata", "testdata")));
+        int[] valid = AccuracyMeasurement.validCells(dem.dem());
+        int[] cells = sample <= 0 || sample >= valid.length ? valid
+                : AccuracyMeasurement.sample(valid, sample, seed);
+        ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        StringBuilder md = new StringBuilder("<!-- " + command + " -->\n");
+        md.append(String.format(Locale.ROOT, "exact vs finer bilinear marches on %s (%,d cells)%n%n",
+                dem.description(), cells.length));
+        md.append(ReferenceConvergence.header()).append('\n');
+        try {
+            for (double e : elevations) {
+                for (double a : azimuths) {
+                    String row = ReferenceConvergence.row(dem.dem(), pool, e, a, cells);
+                    md.append(row).append('\n');
+                    System.err.println(row);
+                }
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+        Files.writeString(out, md, StandardCharsets.UTF_8);
+        System.err.println("wrote " + out);
+    }
+
+    private static void rowSweep(Map<String, String> opt, String command) throws IOException {
+        String name = opt.get("dem");
+        if (name == null) {
+            usage("rowsweep needs --dem, one of " + StudyDem.NAMES);
+        }
+        double[] elevations = numbers(opt.getOrDefault("elevations", "5,20"), "--elevations");
+        double[] azimuths = numbers(opt.getOrDefault("azimuths", "90," + DEFAULT_AZIMUTHS), "--azimuths");
+        Path out = Path.of(opt.getOrDefault("out", "docs/accuracy/rowsweep-" + name + ".md"));
+        StudyDem dem = StudyDem.load(name, Path.of(opt.getOrDefault("testdata", "testdata")));
+        int[] valid = AccuracyMeasurement.validCells(dem.dem());
+        int sample = Integer.parseInt(opt.getOrDefault("sample", "0"));
+        long seed = Long.parseLong(opt.getOrDefault("seed", "846"));
+        int[] cells = sample <= 0 || sample >= valid.length ? valid
+                : AccuracyMeasurement.sample(valid, sample, seed);
+        ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        StringBuilder md = new StringBuilder("<!-- " + command + " -->\n");
+        md.append(String.format(Locale.ROOT, "%% of cells ≠ exact on %s (%s, %,d)%n%n", dem.description(),
+                cells.length == valid.length ? "every valid cell" : "random sample, seed " + seed, cells.length));
+        md.append("| elev. | azim. | row-by-row sweep | sweep (default) | sweep, no first-cell test "
+                + "| march 1 cell, bilinear | row-by-row = march 1 cell? |\n|---:|---:|---:|---:|---:|---:|---|\n");
+        try {
+            for (double e : elevations) {
+                for (double a : azimuths) {
+                    io.github.jdem846.light.LightDirection light = new io.github.jdem846.light.LightDirection(a, e);
+                    float[] exact = StudyMethod.EXACT.algorithm.computeCells(dem.dem(), light,
+                            StudyMethod.EXACT.options, pool, cells);
+                    float[] rows = RowByRowSweep.compute(dem.dem(), light);
+                    float[] sweep = StudyMethod.SWEEP.algorithm.compute(dem.dem(), light, StudyMethod.SWEEP.options,
+                            pool).backingArray();
+                    float[] noFirst = StudyMethod.SWEEP_NO_FIRST_CELL.algorithm.compute(dem.dem(), light,
+                            StudyMethod.SWEEP_NO_FIRST_CELL.options, pool).backingArray();
+                    float[] march1 = StudyMethod.MARCH_1_BILINEAR.algorithm.computeCells(dem.dem(), light,
+                            StudyMethod.MARCH_1_BILINEAR.options, pool, cells);
+                    long dr = 0;
+                    long ds = 0;
+                    long dn = 0;
+                    long dm = 0;
+                    long rm = 0;
+                    for (int q = 0; q < cells.length; q++) {
+                        boolean x = exact[q] >= 0.5f;
+                        int c = cells[q];
+                        dr += (rows[c] >= 0.5f) != x ? 1 : 0;
+                        ds += (sweep[c] >= 0.5f) != x ? 1 : 0;
+                        dn += (noFirst[c] >= 0.5f) != x ? 1 : 0;
+                        dm += (march1[q] >= 0.5f) != x ? 1 : 0;
+                        rm += (rows[c] >= 0.5f) != (march1[q] >= 0.5f) ? 1 : 0;
+                    }
+                    double n = cells.length / 100.0;
+                    String row = String.format(Locale.ROOT, "| %s | %s | %.3f | %.3f | %.3f | %.3f | %s |",
+                            fileNumber(e), fileNumber(a), dr / n, ds / n, dn / n, dm / n,
+                            rm == 0 ? "yes" : String.format(Locale.ROOT, "no (%.3f %% differ)", rm / n));
+                    md.append(row).append('\n');
+                    System.err.println(row);
+                }
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+        Files.writeString(out, md, StandardCharsets.UTF_8);
+        System.err.println("wrote " + out);
+    }
+
     private static AccuracyRow find(List<AccuracyRow> rows, StudyMethod m) {
         return rows.stream().filter(r -> r.method() == m).findFirst().orElseThrow();
     }
@@ -133,6 +283,12 @@ public final class ShadowAccuracyStudy {
         System.err.println("usage: ShadowAccuracyStudy measure --dem NAME [--elevations LIST] [--azimuths LIST]"
                 + " [--sample N|0] [--seed S] [--threads T] [--testdata DIR] [--out DIR]");
         System.err.println("       ShadowAccuracyStudy report [--in DIR] [--images DIR] [--tables FILE]");
+        System.err.println("       ShadowAccuracyStudy diagnose --dem NAME [--method KEY] [--elevations LIST]"
+                + " [--azimuths LIST] [--sample N|0] [--map-azimuth A] [--images DIR] [--out FILE]");
+        System.err.println("       ShadowAccuracyStudy converge --dem NAME [--elevations LIST] [--azimuths LIST]"
+                + " [--sample N|0] [--out FILE]");
+        System.err.println("       ShadowAccuracyStudy rowsweep --dem NAME [--elevations LIST] [--azimuths LIST]"
+                + " [--sample N|0] [--out FILE]");
         System.exit(2);
     }
 }
