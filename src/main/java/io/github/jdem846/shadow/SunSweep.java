@@ -131,6 +131,7 @@ final class SunSweep {
         int kMin = wj0 - pf[wi1] - 1;
         int kMax = wj1 - pf[wi0];
         Window w = new Window(win, wi0, wi1, wj0, wj1, iTop, out);
+        boolean lockstep = bilinear && !f.soft() && f.curvature == 0 && uniformStep == uniformStep;
         List<RecursiveAction> tasks = new ArrayList<>();
         for (int k = kMin; k <= kMax; k += LINES_PER_TASK) {
             int from = k;
@@ -138,7 +139,11 @@ final class SunSweep {
             tasks.add(new RecursiveAction() {
                 @Override
                 protected void compute() {
-                    bands(w, from, to);
+                    if (lockstep) {
+                        bandsUniformHard(w, from, to);
+                    } else {
+                        bands(w, from, to);
+                    }
                 }
             });
         }
@@ -355,6 +360,154 @@ final class SunSweep {
             best = Math.max(best, prev) - drop;
             prev = z == z ? z - drop : Double.NEGATIVE_INFINITY;
         }
+    }
+
+    /**
+     * {@link #bands} for hard shadows on the bilinear surface of a grid with one step length and no curvature: the
+     * lines kFrom … kTo + 1 are walked in lockstep, one major index at a time from the sun's side, each carrying the
+     * running maximum of {@link #walkUniform}, and the cells between them are evaluated as soon as both of their
+     * lines have reached them. At one major index every line samples the same fraction between the same two minor
+     * cells, so the samples of all lines (and the cells between them) are neighbours in memory: one contiguous run
+     * of the row when the sun is north or south (y-major), a few cache lines reused for 16 columns otherwise.
+     */
+    private void bandsUniformHard(Window w, int kFrom, int kTo) {
+        int lines = kTo - kFrom + 2;
+        double drop = f.tanElevation * uniformStep;
+        double dTan = uniformStep * f.tanElevation;
+        double tFirst = (double) firstSample() / SUB_STEPS;
+        int iStart = w.iTop;
+        int iEnd = w.wi0;
+        if (m > 0) {
+            iStart = (int) Math.min(iStart, Math.floor((nMin - kFrom) / m) + 1);
+            iEnd = (int) Math.max(iEnd, Math.ceil((w.wj0 - kTo - 1) / m) - 1);
+        } else if (kTo + 1 < -1 || kFrom > nMin - 1) {
+            return;
+        }
+        if (iStart < iEnd) {
+            return;
+        }
+        double[] best = new double[lines];
+        double[] prev = new double[lines];
+        double[] h = new double[lines];
+        java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
+        java.util.Arrays.fill(prev, Double.NEGATIVE_INFINITY);
+        float[] out = w.out;
+        CellWindow win = w.win;
+        int outStrideJ = rj * win.width() + cj;
+        int wi1 = w.wi1;
+        int wj0 = w.wj0;
+        int wj1 = w.wj1;
+        int sj = strideJ;
+        for (int i = iStart; i >= iEnd; i--) {
+            int pfi = pf[i];
+            double fr = pr[i];
+            int base = baseI[i];
+            // lines kFrom + q whose two minor cells jj, jj + 1 are both on the grid
+            int qa = Math.max(0, -kFrom - pfi);
+            int qb = Math.min(lines - 1, nMin - 2 - kFrom - pfi);
+            for (int q = 0; q < Math.min(qa, lines); q++) {
+                advance(best, prev, h, q, lineSample(kFrom + q, i), drop);
+            }
+            if (qa <= qb) {
+                int at = base + sj * (kFrom + qa + pfi);
+                if (fr == 0) {
+                    for (int q = qa; q <= qb; q++, at += sj) {
+                        double b = best[q];
+                        double p = prev[q];
+                        double z = v[at];
+                        h[q] = b;
+                        best[q] = Math.max(b, p) - drop;
+                        prev[q] = z == z ? z - drop : Double.NEGATIVE_INFINITY;
+                    }
+                } else {
+                    double za = v[at];
+                    for (int q = qa; q <= qb; q++) {
+                        at += sj;
+                        double zb = v[at];
+                        double z;
+                        if (za == za && zb == zb) {
+                            z = za + (zb - za) * fr;
+                        } else {
+                            z = za == za ? za : zb;
+                        }
+                        double b = best[q];
+                        double p = prev[q];
+                        h[q] = b;
+                        best[q] = Math.max(b, p) - drop;
+                        prev[q] = z == z ? z - drop : Double.NEGATIVE_INFINITY;
+                        za = zb;
+                    }
+                }
+            }
+            for (int q = Math.max(qb + 1, Math.max(qa, 0)); q < lines; q++) {
+                advance(best, prev, h, q, lineSample(kFrom + q, i), drop);
+            }
+            if (i > wi1) {
+                continue;
+            }
+            // cells j = kFrom + q + pfi + c between lines q and q + 1, q = 0 … lines − 2
+            int c = fr > 0 ? 1 : 0;
+            double phi = fr > 0 ? 1 - fr : 0;
+            int off = kFrom + pfi + c;
+            int q0 = Math.max(0, wj0 - off);
+            int q1 = Math.min(lines - 2, wj1 - off);
+            if (q0 > q1) {
+                continue;
+            }
+            int outBase = (r0 + ri * i - win.row()) * win.width() + (c0 + ci * i - win.col());
+            boolean inner = i + 1 < nMaj;
+            int up = inner ? baseI[i + 1] : 0;
+            for (int q = q0; q <= q1; q++) {
+                int j = off + q;
+                int cell = base + sj * j;
+                double z0 = v[cell];
+                float result;
+                if (z0 != z0) {
+                    result = 0f;
+                } else {
+                    double ha = h[q];
+                    double hb = h[q + 1];
+                    double s;
+                    if (phi == 0 || hb == Double.NEGATIVE_INFINITY) {
+                        s = ha;
+                    } else if (ha == Double.NEGATIVE_INFINITY) {
+                        s = hb;
+                    } else {
+                        s = ha + (hb - ha) * phi;
+                    }
+                    boolean shadow = s > z0;
+                    if (!shadow) {
+                        if (inner && j + 1 < nMin) {
+                            int u = up + sj * j;
+                            double z10 = v[u];
+                            double z01 = v[cell + sj];
+                            double z11 = v[u + sj];
+                            if (z10 == z10 & z01 == z01 & z11 == z11) {
+                                // the bilinear surface never exceeds its highest corner; else terrain − ray
+                                // along the first step is t·(lin + quad·t), decided at the first and last sample
+                                double lin = (z10 - z0) + (z01 - z0) * m - dTan;
+                                double quad = (z11 - z10 - z01 + z0) * m;
+                                shadow = (z10 > z0 | z01 > z0 | z11 > z0)
+                                        & (lin + quad * tFirst > 0 | lin + quad > 0);
+                            } else {
+                                shadow = localBlocked(i, j, z0);
+                            }
+                        } else {
+                            shadow = localBlocked(i, j, z0);
+                        }
+                    }
+                    result = shadow ? 1f : 0f;
+                }
+                out[outBase + outStrideJ * j] = result;
+            }
+        }
+    }
+
+    private static void advance(double[] best, double[] prev, double[] h, int q, double z, double drop) {
+        double b = best[q];
+        h[q] = b;
+        best[q] = Math.max(b, prev[q]) - drop;
+        prev[q] = z == z ? z - drop : Double.NEGATIVE_INFINITY;
     }
 
     /** Evaluates the cells between lines k and k + 1. */
