@@ -24,16 +24,9 @@ import java.util.Objects;
 public final class HornIllumination implements IlluminationStage {
 
     private final HillshadeOptions options;
-    private final boolean interiorFastPath;
 
     public HornIllumination(HillshadeOptions options) {
-        this(options, true);
-    }
-
-    /** With {@code interiorFastPath = false} every cell takes the general path (the fast path's reference). */
-    HornIllumination(HillshadeOptions options, boolean interiorFastPath) {
         this.options = Objects.requireNonNull(options, "options");
-        this.interiorFastPath = interiorFastPath;
     }
 
     public HillshadeOptions options() {
@@ -49,55 +42,26 @@ public final class HornIllumination implements IlluminationStage {
         final double zf = options.zFactor() / 8.0;
         final CellSpacing spacing = new CellSpacing(dem.geometry(), options);
         final float[] v = dem.backingArray();
-        final int width = dem.width();
-        final int height = dem.height();
         final double[] win = new double[9];
         for (int r = row0; r < row0 + h; r++) {
             final double dx = spacing.eastWest(r);
             final double dy = spacing.northSouth(r);
             final double area = dx * dy;
-            final boolean innerRow = r >= 1 && r <= height - 2;
             int o = (r - row0) * w;
             for (int c = col0; c < col0 + w; c++, o++) {
-                if (interiorFastPath && innerRow && c >= 1 && c <= width - 2) {
-                    // Interior fast path: the 9 cells as they are when none is no-data (GdalWindow's first case).
-                    final int i = (r - 1) * width + c - 1;
-                    final double w0 = v[i];
-                    final double w1 = v[i + 1];
-                    final double w2 = v[i + 2];
-                    final double w3 = v[i + width];
-                    final double w4 = v[i + width + 1];
-                    final double w5 = v[i + width + 2];
-                    final double w6 = v[i + 2 * width];
-                    final double w7 = v[i + 2 * width + 1];
-                    final double w8 = v[i + 2 * width + 2];
-                    final double sum = w0 + w1 + w2 + w3 + w4 + w5 + w6 + w7 + w8;
-                    if (sum == sum) { // NaN if any cell is no-data: then the general path below
-                        out[o] = cosine(w0, w1, w2, w3, w5, w6, w7, w8, zf, dx, dy, area, le, ln, lu);
-                        continue;
-                    }
-                }
-                if (!GdalWindow.fill(v, width, height, c, r, win)) {
+                if (!GdalWindow.fill(v, dem.width(), dem.height(), c, r, win)) {
                     out[o] = Float.NaN;
                     continue;
                 }
-                out[o] = cosine(win[0], win[1], win[2], win[3], win[5], win[6], win[7], win[8], zf, dx, dy, area,
-                        le, ln, lu);
+                final double gx = (win[2] + 2 * win[5] + win[8]) - (win[0] + 2 * win[3] + win[6]);
+                final double gy = (win[0] + 2 * win[1] + win[2]) - (win[6] + 2 * win[7] + win[8]);
+                // The normal (−∂z/∂east, −∂z/∂north, 1) multiplied by Δx·Δy.
+                final double nx = -zf * gx * dy;
+                final double ny = -zf * gy * dx;
+                final double len = Math.sqrt(nx * nx + ny * ny + area * area);
+                final double cos = len > 0 ? (nx * le + ny * ln + area * lu) / len : lu;
+                out[o] = (float) Math.max(-1.0, Math.min(1.0, cos));
             }
         }
-    }
-
-    /** The clamped cosine of incidence for the window w0 … w8 (w4, the centre, does not enter). */
-    private static float cosine(double w0, double w1, double w2, double w3, double w5, double w6, double w7,
-                                double w8, double zf, double dx, double dy, double area, double le, double ln,
-                                double lu) {
-        final double gx = (w2 + 2 * w5 + w8) - (w0 + 2 * w3 + w6);
-        final double gy = (w0 + 2 * w1 + w2) - (w6 + 2 * w7 + w8);
-        // The normal (−∂z/∂east, −∂z/∂north, 1) multiplied by Δx·Δy.
-        final double nx = -zf * gx * dy;
-        final double ny = -zf * gy * dx;
-        final double len = Math.sqrt(nx * nx + ny * ny + area * area);
-        final double cos = len > 0 ? (nx * le + ny * ln + area * lu) / len : lu;
-        return (float) Math.max(-1.0, Math.min(1.0, cos));
     }
 }

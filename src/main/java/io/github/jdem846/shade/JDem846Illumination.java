@@ -37,16 +37,9 @@ import java.util.Objects;
 public final class JDem846Illumination implements IlluminationStage {
 
     private final HillshadeOptions options;
-    private final boolean interiorFastPath;
 
     public JDem846Illumination(HillshadeOptions options) {
-        this(options, true);
-    }
-
-    /** With {@code interiorFastPath = false} every cell takes the general path (the fast path's reference). */
-    JDem846Illumination(HillshadeOptions options, boolean interiorFastPath) {
         this.options = Objects.requireNonNull(options, "options");
-        this.interiorFastPath = interiorFastPath;
     }
 
     public HillshadeOptions options() {
@@ -76,21 +69,6 @@ public final class JDem846Illumination implements IlluminationStage {
                 if (Float.isNaN(zc)) {
                     out[o] = Float.NaN;
                     continue;
-                }
-                if (interiorFastPath && r >= 1 && r <= height - 2 && c >= 1 && c <= width - 2) {
-                    // Interior fast path: all four neighbours present (their sum is NaN or infinite otherwise).
-                    final double zE = ((double) v[rowStart + c + 1] - zc) * k;
-                    final double zW = ((double) v[rowStart + c - 1] - zc) * k;
-                    final double zN = ((double) v[rowStart - width + c] - zc) * k;
-                    final double zS = ((double) v[rowStart + width + c] - zc) * k;
-                    if (Math.abs(zE + zW + zN + zS) < Double.POSITIVE_INFINITY) {
-                        double d = interiorDot(dx, dy, zE, zW, zN, zS, le, ln, lu);
-                        if (belowHorizon && d > 0) {
-                            d = 0.0;
-                        }
-                        out[o] = (float) Math.max(-1.0, Math.min(1.0, d));
-                        continue;
-                    }
                 }
                 // Heights relative to the centre, in double (float32 extremes cannot overflow); NaN = missing.
                 double e = c + 1 < width ? (double) v[rowStart + c + 1] - zc : Double.NaN;
@@ -137,66 +115,6 @@ public final class JDem846Illumination implements IlluminationStage {
             normal[1] = 0;
             normal[2] = 1; // no extent, no relief: flat
         }
-    }
-
-    /**
-     * {@link #vertexNormal} dotted with the light, for finite heights, with the products by the coordinates that
-     * are 0 in the four triangles written out: bit for bit the same value. Each cross-product component below is
-     * the general one minus terms that are a product with an exact 0; such a term is ±0, and p − (±0) = p, while
-     * where p itself is 0 only the sign of a zero can differ, which neither the squares in the lengths nor the
-     * running sums (they start at +0, and x + (±0) = x in round-to-nearest) can see. The sums keep the general
-     * order, from +0. Checked against the general path by InteriorFastPathTest.
-     */
-    private static double interiorDot(double dx, double dy, double zE, double zW, double zN, double zS, double le,
-                                      double ln, double lu) {
-        final double cz = dx * dy; // the up component of every triangle's cross product
-        // (W, C, N): A = (−dx, 0, zW), B = (0, −dy, −zN)
-        final double x1 = dy * zW;
-        final double y1 = -(zN * dx);
-        // (W, S, C): A = (−dx, dy, zW − zS), B = (0, −dy, zS)
-        final double az2 = zW - zS;
-        final double x2 = dy * zS - (-dy) * az2;
-        final double y2 = zS * dx;
-        // (C, S, E): A = (0, dy, −zS), B = (−dx, −dy, zS − zE)
-        final double bz3 = zS - zE;
-        final double x3 = dy * bz3 - dy * zS;
-        final double y3 = zS * dx;
-        // (N, C, E): A = (0, dy, zN), B = (−dx, 0, −zE)
-        final double x4 = -(dy * zE);
-        final double y4 = -(zN * dx);
-        final double cz2 = cz * cz;
-        final double l1 = Math.sqrt(x1 * x1 + y1 * y1 + cz2);
-        final double l2 = Math.sqrt(x2 * x2 + y2 * y2 + cz2);
-        final double l3 = Math.sqrt(x3 * x3 + y3 * y3 + cz2);
-        final double l4 = Math.sqrt(x4 * x4 + y4 * y4 + cz2);
-        double nx = 0.0;
-        double ny = 0.0;
-        double nz = 0.0;
-        if (l1 > 0) {
-            nx += x1 / l1;
-            ny += y1 / l1;
-            nz += cz / l1;
-        }
-        if (l2 > 0) {
-            nx += x2 / l2;
-            ny += y2 / l2;
-            nz += cz / l2;
-        }
-        if (l3 > 0) {
-            nx += x3 / l3;
-            ny += y3 / l3;
-            nz += cz / l3;
-        }
-        if (l4 > 0) {
-            nx += x4 / l4;
-            ny += y4 / l4;
-            nz += cz / l4;
-        }
-        final double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
-        if (len > 0) {
-            return nx / len * le + ny / len * ln + nz / len * lu;
-        }
-        return 0.0 * le + 0.0 * ln + 1.0 * lu; // no extent, no relief: flat, normal (0, 0, 1), as in general
     }
 
     /** Adds the unit normal of triangle (P0, P1, P2) to {@code acc} (eq. 5 / 15 with eq. 12, 14 and 16). */

@@ -24,16 +24,9 @@ public final class MultidirectionalIllumination implements IlluminationStage {
     private static final double COS_225 = Math.cos(Math.toRadians(225));
 
     private final HillshadeOptions options;
-    private final boolean interiorFastPath;
 
     public MultidirectionalIllumination(HillshadeOptions options) {
-        this(options, true);
-    }
-
-    /** With {@code interiorFastPath = false} every cell takes the general path (the fast path's reference). */
-    MultidirectionalIllumination(HillshadeOptions options, boolean interiorFastPath) {
         this.options = Objects.requireNonNull(options, "options");
-        this.interiorFastPath = interiorFastPath;
     }
 
     public HillshadeOptions options() {
@@ -49,67 +42,39 @@ public final class MultidirectionalIllumination implements IlluminationStage {
         final double cosAltZ = Math.cos(alt) * zf;
         final CellSpacing spacing = new CellSpacing(dem.geometry(), options);
         final float[] v = dem.backingArray();
-        final int width = dem.width();
-        final int height = dem.height();
         final double[] win = new double[9];
         for (int r = row0; r < row0 + h; r++) {
             final double dx = spacing.eastWest(r);
             final double dy = spacing.northSouth(r);
             final double area = dx * dy;
-            final boolean innerRow = r >= 1 && r <= height - 2;
             int o = (r - row0) * w;
             for (int c = col0; c < col0 + w; c++, o++) {
-                if (interiorFastPath && innerRow && c >= 1 && c <= width - 2) {
-                    // Interior fast path: the 9 cells as they are when none is no-data (GdalWindow's first case).
-                    final int i = (r - 1) * width + c - 1;
-                    final double w0 = v[i];
-                    final double w1 = v[i + 1];
-                    final double w2 = v[i + 2];
-                    final double w3 = v[i + width];
-                    final double w4 = v[i + width + 1];
-                    final double w5 = v[i + width + 2];
-                    final double w6 = v[i + 2 * width];
-                    final double w7 = v[i + 2 * width + 1];
-                    final double w8 = v[i + 2 * width + 2];
-                    final double sum = w0 + w1 + w2 + w3 + w4 + w5 + w6 + w7 + w8;
-                    if (sum == sum) { // NaN if any cell is no-data: then the general path below
-                        out[o] = value(w0, w1, w2, w3, w5, w6, w7, w8, dx, dy, area, sinAlt, zf, cosAltZ);
-                        continue;
-                    }
-                }
-                if (!GdalWindow.fill(v, width, height, c, r, win)) {
+                if (!GdalWindow.fill(v, dem.width(), dem.height(), c, r, win)) {
                     out[o] = Float.NaN;
                     continue;
                 }
-                out[o] = value(win[0], win[1], win[2], win[3], win[5], win[6], win[7], win[8], dx, dy, area, sinAlt,
-                        zf, cosAltZ);
+                // gdaldem's x and y, multiplied by Δx·Δy.
+                final double x = ((win[0] + 2 * win[3] + win[6]) - (win[2] + 2 * win[5] + win[8])) * dy;
+                final double y = ((win[0] + 2 * win[1] + win[2]) - (win[6] + 2 * win[7] + win[8])) * dx;
+                final double xx = x * x;
+                final double yy = y * y;
+                final double s = xx + yy;
+                if (s == 0) {
+                    out[o] = (float) sinAlt;
+                    continue;
+                }
+                final double base = area * sinAlt;
+                final double v225 = Math.max(0.0, base + (x - y) * COS_225 * cosAltZ);
+                final double v270 = Math.max(0.0, base - x * cosAltZ);
+                final double v315 = Math.max(0.0, base + (x + y) * COS_225 * cosAltZ);
+                final double v360 = Math.max(0.0, base - y * cosAltZ);
+                final double w225 = 0.5 * s - x * y;
+                final double w315 = s - w225;
+                final double weighted = (w225 * v225 + xx * v270 + w315 * v315 + yy * v360) / s;
+                final double denominator = Math.sqrt(area * area + zf * zf * s);
+                final double result = weighted / denominator / 2;
+                out[o] = (float) Math.max(0.0, Math.min(1.0, result));
             }
         }
-    }
-
-    /** The clamped weighted illumination for the window w0 … w8 (w4, the centre, does not enter). */
-    private static float value(double w0, double w1, double w2, double w3, double w5, double w6, double w7,
-                               double w8, double dx, double dy, double area, double sinAlt, double zf,
-                               double cosAltZ) {
-        // gdaldem's x and y, multiplied by Δx·Δy.
-        final double x = ((w0 + 2 * w3 + w6) - (w2 + 2 * w5 + w8)) * dy;
-        final double y = ((w0 + 2 * w1 + w2) - (w6 + 2 * w7 + w8)) * dx;
-        final double xx = x * x;
-        final double yy = y * y;
-        final double s = xx + yy;
-        if (s == 0) {
-            return (float) sinAlt;
-        }
-        final double base = area * sinAlt;
-        final double v225 = Math.max(0.0, base + (x - y) * COS_225 * cosAltZ);
-        final double v270 = Math.max(0.0, base - x * cosAltZ);
-        final double v315 = Math.max(0.0, base + (x + y) * COS_225 * cosAltZ);
-        final double v360 = Math.max(0.0, base - y * cosAltZ);
-        final double w225 = 0.5 * s - x * y;
-        final double w315 = s - w225;
-        final double weighted = (w225 * v225 + xx * v270 + w315 * v315 + yy * v360) / s;
-        final double denominator = Math.sqrt(area * area + zf * zf * s);
-        final double result = weighted / denominator / 2;
-        return (float) Math.max(0.0, Math.min(1.0, result));
     }
 }
