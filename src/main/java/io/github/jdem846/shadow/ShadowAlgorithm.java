@@ -92,7 +92,8 @@ public enum ShadowAlgorithm {
             case SWEEP -> {
                 boolean bilinear = options.sampling() != Sampling.NEAREST;
                 int halo = ShadowHalo.steps(frame, ShadowHalo.tileMin(dem, window), light, options);
-                new SunSweep(dem, frame, bilinear, options.firstCellTest()).run(window, halo, out, pool);
+                new SunSweep(dem, frame, bilinear, bilinear && options.firstCellTest()).run(window, halo, out,
+                        pool);
             }
             case MARCH, EXACT -> march(marcher(dem, frame, options), window, out, pool);
             default -> throw new AssertionError(this);

@@ -9,9 +9,10 @@ import java.util.Objects;
  * @param step                  ray step of {@code march} ({@link StepSize#ARTICLE} = eq. 9); ignored by the others
  * @param sampling              terrain sampling; {@link Sampling#AUTO} = nearest for {@code march}, bilinear for
  *                              {@code sweep}; {@code exact} is always bilinear
- * @param firstCellTest         {@code sweep} only: test the first cell of each ray on the bilinear surface in
- *                              eighth-cell steps, as {@code exact} does (true by default; false only for the
- *                              accuracy study)
+ * @param firstCellTest         {@code sweep} with bilinear sampling only: test the first cell of each ray on the
+ *                              bilinear surface in eighth-cell steps, as {@code exact} does (true by default; false
+ *                              only for the accuracy study). A nearest-sampling sweep never does it: on block
+ *                              terrain it would see the next cell half a cell too close
  * @param softShadows           shadowed fraction of the sun's disk instead of 0/1
  * @param sunDiameterDegrees    apparent diameter of the sun's disk for soft shadows, 0.53° by default
  * @param earthCurvature        lower distant terrain by (1 − k)·d²/(2R) (curvature less refraction)

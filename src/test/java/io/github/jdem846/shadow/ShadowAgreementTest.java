@@ -52,7 +52,7 @@ class ShadowAgreementTest {
         // 93 m, so 45° is off-diagonal there: 0.93 % at 5°.) Off-axis a cell lies between two lines and the sweep
         // interpolates their shadow heights, so it is approximate (measured 0.30–1.51 % on Big Tujunga, 0.62–1.82 %
         // on Jacksboro at 160/250/300°).
-        ShadowOptions sweep = ShadowOptions.DEFAULTS.withSampling(Sampling.NEAREST).withFirstCellTest(false);
+        ShadowOptions sweep = ShadowOptions.DEFAULTS.withSampling(Sampling.NEAREST);   // first-cell test: bilinear only
         ShadowOptions march = ShadowOptions.DEFAULTS.withSampling(Sampling.NEAREST).withStep(StepSize.ONE_CELL);
         for (Dem dem : new Dem[] {bigTujunga, jacksboro}) {
             for (double e : new double[] {5, 20}) {

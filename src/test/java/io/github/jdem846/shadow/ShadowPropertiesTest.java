@@ -63,8 +63,7 @@ class ShadowPropertiesTest {
                 new Variant("march ½ cell bilinear", ShadowAlgorithm.MARCH,
                         d.withStep(StepSize.HALF_CELL).withSampling(Sampling.BILINEAR)),
                 new Variant("sweep (bilinear)", ShadowAlgorithm.SWEEP, d),
-                new Variant("sweep nearest, no first-cell test", ShadowAlgorithm.SWEEP,
-                        d.withSampling(Sampling.NEAREST).withFirstCellTest(false)),
+                new Variant("sweep nearest", ShadowAlgorithm.SWEEP, d.withSampling(Sampling.NEAREST)),
                 new Variant("exact", ShadowAlgorithm.EXACT, d));
     }
 
