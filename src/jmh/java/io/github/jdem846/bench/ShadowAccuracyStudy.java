@@ -22,15 +22,15 @@ import java.util.concurrent.ForkJoinPool;
  *      [--elevations 2,5,10,20,45] [--azimuths 0,30,45,100,135,160,200,215,250,280,300,330] \
  *      [--sample 200000] [--seed 846] [--threads 2] [--testdata testdata] [--out docs/accuracy]
  * java -cp target/benchmarks.jar io.github.jdem846.bench.ShadowAccuracyStudy report \
- *      [--in docs/accuracy] [--images docs/images] [--tables docs/accuracy/tables.md]
+ *      [--in docs/accuracy] [--images docs/images] [--doc docs/accuracy.md]
  * </pre>
  * {@code measure} writes one CSV per DEM and elevation ({@code OUT/DEM-eELEVATION.csv}), so a long study runs in
- * pieces; {@code report} reads every CSV in {@code --in} and writes the Markdown tables and the work-precision
- * plots. {@code --sample 0} compares every valid cell. {@code diagnose} tells, for one method's disagreements,
- * how many lie on exact's shadow edges and how far the sun must move for exact to agree
- * ({@link AccuracyDiagnosis}), and can draw a map of them; {@code converge} compares {@code exact} with finer
- * marches ({@link ReferenceConvergence}); {@code rowsweep} measures the row-by-row re-interpolating sweep the issue
- * warns about ({@link RowByRowSweep}) next to ours.
+ * pieces; {@code --sample 0} compares every valid cell. {@code report} reads every CSV in {@code --in} and writes
+ * the work-precision plots and the Markdown tables (into {@code --doc} between its generated-tables markers, or as
+ * the whole file when it has none). {@code diagnose} tells, for one method's disagreements, how many lie on exact's
+ * shadow edges and how far the sun must move for exact to agree ({@link AccuracyDiagnosis}), and can draw a map of
+ * them; {@code converge} compares {@code exact} with finer marches ({@link ReferenceConvergence}); {@code rowsweep}
+ * measures the row-by-row re-interpolating sweep the issue warns about ({@link RowByRowSweep}) next to ours.
  */
 public final class ShadowAccuracyStudy {
 
@@ -56,7 +56,7 @@ public final class ShadowAccuracyStudy {
         } else {
             AccuracyReport.write(Path.of(opt.getOrDefault("in", "docs/accuracy")),
                     Path.of(opt.getOrDefault("images", "docs/images")),
-                    Path.of(opt.getOrDefault("tables", "docs/accuracy/tables.md")));
+                    Path.of(opt.getOrDefault("doc", "docs/accuracy.md")));
         }
     }
 
@@ -282,7 +282,7 @@ public final class ShadowAccuracyStudy {
         System.err.println("ShadowAccuracyStudy: " + problem);
         System.err.println("usage: ShadowAccuracyStudy measure --dem NAME [--elevations LIST] [--azimuths LIST]"
                 + " [--sample N|0] [--seed S] [--threads T] [--testdata DIR] [--out DIR]");
-        System.err.println("       ShadowAccuracyStudy report [--in DIR] [--images DIR] [--tables FILE]");
+        System.err.println("       ShadowAccuracyStudy report [--in DIR] [--images DIR] [--doc FILE]");
         System.err.println("       ShadowAccuracyStudy diagnose --dem NAME [--method KEY] [--elevations LIST]"
                 + " [--azimuths LIST] [--sample N|0] [--map-azimuth A] [--images DIR] [--out FILE]");
         System.err.println("       ShadowAccuracyStudy converge --dem NAME [--elevations LIST] [--azimuths LIST]"
