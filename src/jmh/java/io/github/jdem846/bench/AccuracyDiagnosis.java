@@ -17,10 +17,14 @@ import javax.imageio.ImageIO;
  * shadow edge of {@code exact} (a 4-neighbour differs), and how far the sun must move in elevation for {@code exact}
  * to agree (a sweep-shaded cell that exact lights is tested with a lower sun, the reverse with a higher one). A
  * disagreement that goes away within a few hundredths of a degree is a grazing ray — the two surfaces differ by
- * centimetres there; one that needs a large change is a real error of the method. Not a timing: no lock needed
+ * centimetres there; one that needs a large change is a real error of the method. Also counts disagreements
+ * within {@link #EDGE_CELLS} cells of the grid's outer edge. Not a timing: no lock needed
  * beyond the shared one.
  */
 final class AccuracyDiagnosis {
+
+    /** Cells this close to the grid's outer edge count as "at the edge". */
+    static final int EDGE_CELLS = 3;
 
     /** Elevation changes tried, degrees. */
     static final double[] DELTAS = {0.01, 0.03, 0.1, 0.3, 1, 3};
@@ -77,6 +81,12 @@ final class AccuracyDiagnosis {
                 }
             }
         }
+        int nearEdge = 0;
+        for (int q = 0; q < nb; q++) {
+            int c = bad[q] % w;
+            int r = bad[q] / w;
+            nearEdge += Math.min(Math.min(c, w - 1 - c), Math.min(r, h - 1 - r)) < EDGE_CELLS ? 1 : 0;
+        }
         // elevation change that makes exact agree
         int[] resolved = new int[DELTAS.length];
         boolean[] done = new boolean[nb];
@@ -108,8 +118,9 @@ final class AccuracyDiagnosis {
         for (int q = 0; q < nb; q++) {
             fs += falseShadow[q] ? 1 : 0;
         }
-        StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "| %s | %s | %d | %d / %d | %s |",
-                AccuracyPlot.fmt(elevation), AccuracyPlot.fmt(azimuth), nb, fs, nb - fs, share(edge, nb)));
+        StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "| %s | %s | %d | %d / %d | %s | %s |",
+                AccuracyPlot.fmt(elevation), AccuracyPlot.fmt(azimuth), nb, fs, nb - fs, share(edge, nb),
+                share(nearEdge, nb)));
         int cum = 0;
         for (int d = 0; d < DELTAS.length; d++) {
             cum += resolved[d];
@@ -120,8 +131,8 @@ final class AccuracyDiagnosis {
 
     static String header() {
         StringBuilder sb = new StringBuilder("| elev. | azim. | cells ≠ exact | method shadow / method lit "
-                + "| on an exact shadow edge |");
-        StringBuilder sep = new StringBuilder("|---:|---:|---:|---:|---:|");
+                + "| on an exact shadow edge | within " + EDGE_CELLS + " cells of the grid edge |");
+        StringBuilder sep = new StringBuilder("|---:|---:|---:|---:|---:|---:|");
         for (double d : DELTAS) {
             sb.append(" agree within ±").append(AccuracyPlot.fmt(d)).append("° |");
             sep.append("---:|");
@@ -159,8 +170,16 @@ final class AccuracyDiagnosis {
         for (int q = 0; q < cells.length; q++) {
             rgb[cells[q]] = ref[q] >= 0.5f ? 0x707070 : 0xdddddd;
         }
-        for (int q = 0; q < bad.length; q++) {
-            rgb[bad[q]] = falseShadow[q] ? 0xe00000 : 0x0040ff;
+        for (int q = 0; q < bad.length; q++) {           // 3×3 dots, so that single cells show
+            int c = bad[q] % w;
+            int r = bad[q] / w;
+            for (int dr = -1; dr <= 1; dr++) {
+                for (int dc = -1; dc <= 1; dc++) {
+                    if (c + dc >= 0 && c + dc < w && r + dr >= 0 && r + dr < h) {
+                        rgb[(r + dr) * w + c + dc] = falseShadow[q] ? 0xe00000 : 0x0040ff;
+                    }
+                }
+            }
         }
         BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         img.setRGB(0, 0, w, h, rgb, 0, w);

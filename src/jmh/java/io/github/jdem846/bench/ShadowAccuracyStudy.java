@@ -22,27 +22,31 @@ import java.util.concurrent.ForkJoinPool;
  *      [--elevations 2,5,10,20,45] [--azimuths 0,30,45,100,135,160,200,215,250,280,300,330] \
  *      [--sample 200000] [--seed 846] [--threads 2] [--testdata testdata] [--out docs/accuracy]
  * java -cp target/benchmarks.jar io.github.jdem846.bench.ShadowAccuracyStudy report \
- *      [--in docs/accuracy] [--images docs/images] [--tables docs/accuracy/tables.md]
+ *      [--in docs/accuracy] [--images docs/images] [--doc docs/accuracy.md]
  * </pre>
  * {@code measure} writes one CSV per DEM and elevation ({@code OUT/DEM-eELEVATION.csv}), so a long study runs in
- * pieces; {@code report} reads every CSV in {@code --in} and writes the Markdown tables and the work-precision
- * plots. {@code --sample 0} compares every valid cell. {@code diagnose} tells, for one method's disagreements,
- * how many lie on exact's shadow edges and how far the sun must move for exact to agree
- * ({@link AccuracyDiagnosis}), and can draw a map of them; {@code converge} compares {@code exact} with finer
- * marches ({@link ReferenceConvergence}); {@code rowsweep} measures the row-by-row re-interpolating sweep the issue
- * warns about ({@link RowByRowSweep}) next to ours.
+ * pieces; {@code --sample 0} compares every valid cell. {@code report} reads every CSV in {@code --in} and writes
+ * the work-precision plots and the Markdown tables (into {@code --doc} between its generated-tables markers, or as
+ * the whole file when it has none). {@code diagnose} tells, for one method's disagreements, how many lie on exact's
+ * shadow edges and how far the sun must move for exact to agree ({@link AccuracyDiagnosis}), and can draw a map of
+ * them; {@code converge} compares {@code exact} with finer marches ({@link ReferenceConvergence}); {@code rowsweep}
+ * measures the row-by-row re-interpolating sweep the issue warns about ({@link RowByRowSweep}) next to ours;
+ * {@code border} measures how much of the disagreement comes from the grid's edge ({@link NoDataBorderCheck}).
  */
 public final class ShadowAccuracyStudy {
 
     /** Off-axis azimuths as well as the axes and diagonals, where rays pass through cell centres. */
     static final String DEFAULT_AZIMUTHS = "0,30,45,100,135,160,200,215,250,280,300,330";
 
+    private static final List<String> COMMANDS = List.of("measure", "report", "diagnose", "converge", "rowsweep",
+            "border");
+
     private ShadowAccuracyStudy() {
     }
 
     public static void main(String[] args) throws IOException {
-        if (args.length == 0 || !List.of("measure", "report", "diagnose", "converge", "rowsweep").contains(args[0])) {
-            usage("expected 'measure', 'report', 'diagnose', 'converge' or 'rowsweep' first");
+        if (args.length == 0 || !COMMANDS.contains(args[0])) {
+            usage("expected one of " + COMMANDS + " first");
         }
         Map<String, String> opt = options(Arrays.copyOfRange(args, 1, args.length));
         if (args[0].equals("measure")) {
@@ -53,10 +57,12 @@ public final class ShadowAccuracyStudy {
             converge(opt, String.join(" ", args));
         } else if (args[0].equals("rowsweep")) {
             rowSweep(opt, String.join(" ", args));
+        } else if (args[0].equals("border")) {
+            border(opt, String.join(" ", args));
         } else {
             AccuracyReport.write(Path.of(opt.getOrDefault("in", "docs/accuracy")),
                     Path.of(opt.getOrDefault("images", "docs/images")),
-                    Path.of(opt.getOrDefault("tables", "docs/accuracy/tables.md")));
+                    Path.of(opt.getOrDefault("doc", "docs/accuracy.md")));
         }
     }
 
@@ -250,6 +256,37 @@ public final class ShadowAccuracyStudy {
         System.err.println("wrote " + out);
     }
 
+    private static void border(Map<String, String> opt, String command) throws IOException {
+        String name = opt.get("dem");
+        if (name == null) {
+            usage("border needs --dem, one of " + StudyDem.NAMES);
+        }
+        StudyMethod method = StudyMethod.ofKey(opt.getOrDefault("method", "sweep"));
+        double[] elevations = numbers(opt.getOrDefault("elevations", "5"), "--elevations");
+        double[] azimuths = numbers(opt.getOrDefault("azimuths", "45,160,250"), "--azimuths");
+        int width = Integer.parseInt(opt.getOrDefault("border", "3"));
+        Path out = Path.of(opt.getOrDefault("out", "docs/accuracy/border-" + name + "-" + method.key() + ".md"));
+        StudyDem dem = StudyDem.load(name, Path.of(opt.getOrDefault("testdata", "testdata")));
+        ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        StringBuilder md = new StringBuilder("<!-- " + command + " -->\n");
+        md.append(String.format(Locale.ROOT, "%s vs exact on %s, as is and framed by %d no-data cells%n%n",
+                method.label, dem.description(), width));
+        md.append(NoDataBorderCheck.header()).append('\n');
+        try {
+            for (double e : elevations) {
+                for (double a : azimuths) {
+                    String row = NoDataBorderCheck.row(dem.dem(), method, width, e, a, pool);
+                    md.append(row).append('\n');
+                    System.err.println(row);
+                }
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+        Files.writeString(out, md, StandardCharsets.UTF_8);
+        System.err.println("wrote " + out);
+    }
+
     private static AccuracyRow find(List<AccuracyRow> rows, StudyMethod m) {
         return rows.stream().filter(r -> r.method() == m).findFirst().orElseThrow();
     }
@@ -282,11 +319,13 @@ public final class ShadowAccuracyStudy {
         System.err.println("ShadowAccuracyStudy: " + problem);
         System.err.println("usage: ShadowAccuracyStudy measure --dem NAME [--elevations LIST] [--azimuths LIST]"
                 + " [--sample N|0] [--seed S] [--threads T] [--testdata DIR] [--out DIR]");
-        System.err.println("       ShadowAccuracyStudy report [--in DIR] [--images DIR] [--tables FILE]");
+        System.err.println("       ShadowAccuracyStudy report [--in DIR] [--images DIR] [--doc FILE]");
         System.err.println("       ShadowAccuracyStudy diagnose --dem NAME [--method KEY] [--elevations LIST]"
                 + " [--azimuths LIST] [--sample N|0] [--map-azimuth A] [--images DIR] [--out FILE]");
         System.err.println("       ShadowAccuracyStudy converge --dem NAME [--elevations LIST] [--azimuths LIST]"
                 + " [--sample N|0] [--out FILE]");
+        System.err.println("       ShadowAccuracyStudy border --dem NAME [--method KEY] [--elevations LIST]"
+                + " [--azimuths LIST] [--border CELLS] [--out FILE]");
         System.err.println("       ShadowAccuracyStudy rowsweep --dem NAME [--elevations LIST] [--azimuths LIST]"
                 + " [--sample N|0] [--out FILE]");
         System.exit(2);
