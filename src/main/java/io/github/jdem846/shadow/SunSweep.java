@@ -416,7 +416,7 @@ final class SunSweep {
                         double p = prev[q];
                         double z = v[at];
                         h[q] = b;
-                        best[q] = Math.max(b, p) - drop;
+                        best[q] = (b >= p ? b : p) - drop;
                         prev[q] = z == z ? z - drop : Double.NEGATIVE_INFINITY;
                     }
                 } else {
@@ -433,7 +433,7 @@ final class SunSweep {
                         double b = best[q];
                         double p = prev[q];
                         h[q] = b;
-                        best[q] = Math.max(b, p) - drop;
+                        best[q] = (b >= p ? b : p) - drop;
                         prev[q] = z == z ? z - drop : Double.NEGATIVE_INFINITY;
                         za = zb;
                     }
@@ -482,13 +482,14 @@ final class SunSweep {
                             double z10 = v[u];
                             double z01 = v[cell + sj];
                             double z11 = v[u + sj];
-                            if (z10 == z10 & z01 == z01 & z11 == z11) {
-                                // the bilinear surface never exceeds its highest corner; else terrain − ray
-                                // along the first step is t·(lin + quad·t), decided at the first and last sample
-                                double lin = (z10 - z0) + (z01 - z0) * m - dTan;
-                                double quad = (z11 - z10 - z01 + z0) * m;
-                                shadow = (z10 > z0 | z01 > z0 | z11 > z0)
-                                        & (lin + quad * tFirst > 0 | lin + quad > 0);
+                            // as localBlocked: the bilinear surface never exceeds its highest corner; else
+                            // terrain − ray along the first step is t·(lin + quad·t), decided at the first and the
+                            // last sample; a no-data corner makes lin + quad NaN (also when m = 0)
+                            double lin = (z10 - z0) + (z01 - z0) * m - dTan;
+                            double quad = (z11 - z10 - z01 + z0) * m;
+                            double end = lin + quad;
+                            if (end == end) {
+                                shadow = (z10 > z0 | z01 > z0 | z11 > z0) & (lin + quad * tFirst > 0 | end > 0);
                             } else {
                                 shadow = localBlocked(i, j, z0);
                             }
