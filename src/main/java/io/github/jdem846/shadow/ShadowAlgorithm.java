@@ -56,9 +56,10 @@ public enum ShadowAlgorithm {
     }
 
     /**
-     * Shadows of the cells of {@code window} only (a mask of the window's size), reading the DEM only inside
-     * {@link ShadowHalo#window(Dem, LightDirection, ShadowOptions, CellWindow)}. Hard-shadow results are identical
-     * to the same cells of a whole-DEM computation, for any window and any pool.
+     * Shadows of the cells of {@code window} only (a mask of the window's size). {@code march} and {@code exact} read
+     * the DEM only inside {@link ShadowHalo#window(Dem, LightDirection, ShadowOptions, CellWindow)}; {@code sweep}
+     * reads a halo longer by (zMax − zMin)/tan(elevation) toward the sun. Hard-shadow results are identical to the
+     * same cells of a whole-DEM computation, for any window and any pool.
      */
     public ShadowMask computeWindow(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
                                     CellWindow window) {
@@ -91,7 +92,9 @@ public enum ShadowAlgorithm {
         switch (this) {
             case SWEEP -> {
                 boolean bilinear = options.sampling() != Sampling.NEAREST;
-                int halo = ShadowHalo.steps(frame, ShadowHalo.tileMin(dem, window), light, options);
+                double relief = dem.statistics().max() - dem.statistics().min();
+                int halo = window.width() == dem.width() && window.height() == dem.height() ? Integer.MAX_VALUE
+                        : ShadowHalo.sweepSteps(frame, ShadowHalo.tileMin(dem, window), relief, light, options);
                 new SunSweep(dem, frame, bilinear, bilinear && options.firstCellTest()).run(window, halo, out,
                         pool);
             }

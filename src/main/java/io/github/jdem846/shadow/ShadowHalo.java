@@ -98,9 +98,16 @@ public final class ShadowHalo {
         return min == Float.POSITIVE_INFINITY ? Double.NaN : min;
     }
 
-    /** Halo length in major steps for the sweep, Integer.MAX_VALUE when unbounded. */
-    static int steps(RayFrame frame, double tileMin, LightDirection light, ShadowOptions options) {
-        double dist = distanceMeters(frame.zMax, tileMin, light, options);
+    /**
+     * Halo length in major steps for the sweep (Integer.MAX_VALUE / 2 when unbounded): the physical halo lengthened
+     * by {@code relief}/tan(elevation), so that every line height the sweep leaves out is below the level below
+     * which it ignores a line (see {@link SunSweep}); the window then equals the same cells of the whole grid.
+     *
+     * @param relief zMax − zMin of the whole DEM
+     */
+    static int sweepSteps(RayFrame frame, double tileMin, double relief, LightDirection light,
+                          ShadowOptions options) {
+        double dist = distanceMeters(frame.zMax, tileMin - relief, light, options);
         return cells(dist / frame.minMetresPerStep() + MARGIN);
     }
 

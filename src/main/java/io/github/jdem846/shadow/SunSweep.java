@@ -13,6 +13,10 @@ import java.util.concurrent.RecursiveAction;
  * re-interpolated from line to line, so nothing smears sideways). A cell lies between two adjacent lines; its shadow
  * height from two cells upstream on is interpolated between theirs, and the first cell of its own ray is tested
  * directly on the bilinear surface in eighth-cell steps, as {@code exact} does, where a steep slope shades itself.
+ * A line whose shadow height is below z0 − (zMax − zMin) (no terrain, or only terrain that could never shade the
+ * cell) counts as no terrain and the other line decides alone. That rule makes the result depend only on terrain
+ * within (2·zMax − zMin − z0)/tan(elevation) of the cell, so a window computed with that halo ({@link
+ * ShadowHalo#sweepSteps}) equals the same cells of the whole grid; interpolating toward a far, low line would not.
  *
  * <p>Work: one sample per line per column plus a constant per cell, whatever the sun elevation. Lines are split
  * into chunks across a ForkJoinPool; every line is computed the same way in any chunk, so the mask does not depend
@@ -47,12 +51,23 @@ final class SunSweep {
     private final int strideJ;
     /** Metres of one major step when it is the same on every row (projected grids), else NaN. */
     private final double uniformStep;
+    /** zMax − zMin of the whole DEM: a line whose shadow height is lower than z0 − relief counts as no terrain. */
+    private final double relief;
+
+    /** When false, every case takes the line-by-line path ({@link #bands}): the reference of the tests. */
+    private final boolean lockstepAllowed;
 
     SunSweep(Dem dem, RayFrame frame, boolean bilinear, boolean firstCellTest) {
+        this(dem, frame, bilinear, firstCellTest, true);
+    }
+
+    SunSweep(Dem dem, RayFrame frame, boolean bilinear, boolean firstCellTest, boolean lockstepAllowed) {
+        this.lockstepAllowed = lockstepAllowed;
         this.v = dem.backingArray();
         this.f = frame;
         this.bilinear = bilinear;
         this.firstCellTest = firstCellTest;
+        this.relief = dem.statistics().max() - dem.statistics().min();
         int w = dem.width();
         int h = dem.height();
         this.gridW = w;
@@ -131,7 +146,7 @@ final class SunSweep {
         int kMin = wj0 - pf[wi1] - 1;
         int kMax = wj1 - pf[wi0];
         Window w = new Window(win, wi0, wi1, wj0, wj1, iTop, out);
-        boolean lockstep = bilinear && !f.soft() && f.curvature == 0 && uniformStep == uniformStep;
+        boolean lockstep = lockstepAllowed && bilinear && !f.soft() && f.curvature == 0 && uniformStep == uniformStep;
         List<RecursiveAction> tasks = new ArrayList<>();
         for (int k = kMin; k <= kMax; k += LINES_PER_TASK) {
             int from = k;
@@ -268,8 +283,18 @@ final class SunSweep {
         double[] pos = line.pos;
         boolean uniform = uniformStep == uniformStep;
         double step = uniformStep;
-        // pos[i - wi0] = distance downstream from iHi
-        pos[iHi - wi0] = 0;
+        // pos[i - wi0] = distance downstream from the line's top on the whole grid, iHiAll: the same numbers
+        // whatever window and halo cut the walk at iHi
+        int iHiAll = m > 0 ? (int) Math.min(nMaj - 1, Math.floor((nMin - k) / m) + 1) : nMaj - 1;
+        if (uniform) {
+            pos[iHi - wi0] = (iHiAll - iHi) * step;
+        } else {
+            double top = 0;
+            for (int i = iHiAll - 1; i >= iHi; i--) {
+                top += f.metresPerStep[rowOf(i, lineRow(k, i))];
+            }
+            pos[iHi - wi0] = top;
+        }
         double best = Double.NEGATIVE_INFINITY;   // max of z + tan·P (no curvature)
         double bestP = 0;
         int hullHead = 0;
@@ -280,10 +305,9 @@ final class SunSweep {
         for (int i = iHi; i >= iLo; i--) {
             if (i < iHi) {
                 if (uniform) {
-                    pos[i - wi0] = (iHi - i) * step;
+                    pos[i - wi0] = (iHiAll - i) * step;
                 } else {
-                    int jr = Math.max(0, Math.min(nMin - 1, k + pf[i] + (pr[i] >= 0.5 ? 1 : 0)));
-                    pos[i - wi0] = pos[i + 1 - wi0] + f.metresPerStep[rowOf(i, jr)];
+                    pos[i - wi0] = pos[i + 1 - wi0] + f.metresPerStep[rowOf(i, lineRow(k, i))];
                 }
             }
             double p = pos[i - wi0];
@@ -344,6 +368,11 @@ final class SunSweep {
                 }
             }
         }
+    }
+
+    /** The minor cell nearest to line k at major index i, clamped into the grid. */
+    private int lineRow(int k, int i) {
+        return Math.max(0, Math.min(nMin - 1, k + pf[i] + (pr[i] >= 0.5 ? 1 : 0)));
     }
 
     /** {@link #walkLine} for hard shadows on a grid with one step length and no curvature: a running maximum. */
@@ -416,7 +445,7 @@ final class SunSweep {
                         double p = prev[q];
                         double z = v[at];
                         h[q] = b;
-                        best[q] = Math.max(b, p) - drop;
+                        best[q] = (b >= p ? b : p) - drop;
                         prev[q] = z == z ? z - drop : Double.NEGATIVE_INFINITY;
                     }
                 } else {
@@ -433,7 +462,7 @@ final class SunSweep {
                         double b = best[q];
                         double p = prev[q];
                         h[q] = b;
-                        best[q] = Math.max(b, p) - drop;
+                        best[q] = (b >= p ? b : p) - drop;
                         prev[q] = z == z ? z - drop : Double.NEGATIVE_INFINITY;
                         za = zb;
                     }
@@ -467,10 +496,11 @@ final class SunSweep {
                 } else {
                     double ha = h[q];
                     double hb = h[q + 1];
+                    double floor = z0 - relief;
                     double s;
-                    if (phi == 0 || hb == Double.NEGATIVE_INFINITY) {
+                    if (phi == 0 || !(hb >= floor)) {
                         s = ha;
-                    } else if (ha == Double.NEGATIVE_INFINITY) {
+                    } else if (!(ha >= floor)) {
                         s = hb;
                     } else {
                         s = ha + (hb - ha) * phi;
@@ -482,13 +512,14 @@ final class SunSweep {
                             double z10 = v[u];
                             double z01 = v[cell + sj];
                             double z11 = v[u + sj];
-                            if (z10 == z10 & z01 == z01 & z11 == z11) {
-                                // the bilinear surface never exceeds its highest corner; else terrain − ray
-                                // along the first step is t·(lin + quad·t), decided at the first and last sample
-                                double lin = (z10 - z0) + (z01 - z0) * m - dTan;
-                                double quad = (z11 - z10 - z01 + z0) * m;
-                                shadow = (z10 > z0 | z01 > z0 | z11 > z0)
-                                        & (lin + quad * tFirst > 0 | lin + quad > 0);
+                            // as localBlocked: the bilinear surface never exceeds its highest corner; else
+                            // terrain − ray along the first step is t·(lin + quad·t), decided at the first and the
+                            // last sample; a no-data corner makes lin + quad NaN (also when m = 0)
+                            double lin = (z10 - z0) + (z01 - z0) * m - dTan;
+                            double quad = (z11 - z10 - z01 + z0) * m;
+                            double end = lin + quad;
+                            if (end == end) {
+                                shadow = (z10 > z0 | z01 > z0 | z11 > z0) & (lin + quad * tFirst > 0 | end > 0);
                             } else {
                                 shadow = localBlocked(i, j, z0);
                             }
@@ -537,12 +568,13 @@ final class SunSweep {
             } else {
                 double ha = a.height[at];
                 double hb = b.height[at];
+                double floor = z0 - relief;
                 double s;
                 double occ;
-                if (phi == 0 || hb == Double.NEGATIVE_INFINITY) {
+                if (phi == 0 || !(hb >= floor)) {
                     s = ha;
                     occ = a.occluder[at];
-                } else if (ha == Double.NEGATIVE_INFINITY) {
+                } else if (!(ha >= floor)) {
                     s = hb;
                     occ = b.occluder[at];
                 } else {

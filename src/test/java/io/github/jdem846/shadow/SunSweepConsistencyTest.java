@@ -1,0 +1,217 @@
+package io.github.jdem846.shadow;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.geo.Ellipsoid;
+import io.github.jdem846.io.DemReader;
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.raster.PixelAnchor;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import java.util.concurrent.ForkJoinPool;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The sweep's fast path (a block of lines walked in lockstep, hard shadows on uniform projected grids) against its
+ * straightforward line-by-line path, cell for cell and bit for bit; and the mask's independence of the pool size
+ * and of the window (computeWindow = the same cells of compute), on real DEMs (projected and geographic) and on
+ * seeded synthetic ones with no-data stripes, Earth curvature and geographic cells.
+ */
+class SunSweepConsistencyTest {
+
+    private static final String[] REAL_DEMS = {"bigtujunga_srtm30m_utm11n", "jacksboro_srtm3s_wgs84",
+        "luxembourg_srtm30s_wgs84", "maungawhau-volcano_10m_nztm-approx",
+        "vancouver-island_topobathy_2min_mercator"};
+    private static final double[] ELEVATIONS = {2, 5, 20, 45};
+    private static final double[] AZIMUTHS = {0, 45, 90, 160, 250, 300, 359.999};
+
+    private static ForkJoinPool one;
+    private static ForkJoinPool two;
+    private static ForkJoinPool three;
+
+    @BeforeAll
+    static void start() {
+        one = new ForkJoinPool(1);
+        two = new ForkJoinPool(2);
+        three = new ForkJoinPool(3);
+    }
+
+    @AfterAll
+    static void stop() {
+        one.shutdownNow();
+        two.shutdownNow();
+        three.shutdownNow();
+    }
+
+    private static Dem real(String name) throws IOException {
+        return DemReader.read(Path.of("testdata/dem/" + name + ".flt"));
+    }
+
+    /** The sweep with the lockstep fast path allowed or not. */
+    private static float[] sweep(Dem dem, LightDirection light, ShadowOptions options, boolean lockstep,
+                                 ForkJoinPool pool) {
+        float[] out = new float[dem.width() * dem.height()];
+        RayFrame frame = new RayFrame(dem, light, options);
+        new SunSweep(dem, frame, options.sampling() != Sampling.NEAREST, options.firstCellTest(), lockstep)
+                .run(CellWindow.whole(dem.width(), dem.height()), Integer.MAX_VALUE, out, pool);
+        return out;
+    }
+
+    private static int differences(float[] a, float[] b) {
+        int n = 0;
+        for (int i = 0; i < a.length; i++) {
+            if (Float.floatToRawIntBits(a[i]) != Float.floatToRawIntBits(b[i])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Test
+    void lockstepEqualsLineByLineOnRealDems() throws IOException {
+        int masks = 0;
+        long shadowed = 0;
+        for (String name : REAL_DEMS) {
+            Dem dem = name.startsWith("bigtujunga") ? real(name).crop(300, 150, 400, 300) : real(name);
+            for (double e : ELEVATIONS) {
+                for (double a : AZIMUTHS) {
+                    LightDirection light = new LightDirection(a, e);
+                    float[] fast = sweep(dem, light, ShadowOptions.DEFAULTS, true, two);
+                    float[] reference = sweep(dem, light, ShadowOptions.DEFAULTS, false, one);
+                    assertEquals(0, differences(fast, reference), name + " az " + a + " el " + e);
+                    for (float s : fast) {
+                        shadowed += s >= 0.5f ? 1 : 0;
+                    }
+                    masks++;
+                }
+            }
+        }
+        assertEquals(REAL_DEMS.length * ELEVATIONS.length * AZIMUTHS.length, masks);
+        assertTrue(shadowed > 10_000, "the comparison must include shadowed cells, got " + shadowed);
+    }
+
+    @Test
+    void lockstepEqualsLineByLineWithNoDataAndEveryAzimuth() {
+        Random rnd = new Random(846);
+        for (int t = 0; t < 60; t++) {
+            Dem dem = synthetic(rnd, false);
+            LightDirection light = new LightDirection(t * 6 + rnd.nextDouble() * 6, 0.5 + rnd.nextDouble() * 60);
+            float[] fast = sweep(dem, light, ShadowOptions.DEFAULTS, true, three);
+            float[] reference = sweep(dem, light, ShadowOptions.DEFAULTS, false, one);
+            assertEquals(0, differences(fast, reference), "trial " + t + " " + light);
+        }
+    }
+
+    @Test
+    void sameMaskForAnyPoolSize() throws IOException {
+        Dem dem = real("jacksboro_srtm3s_wgs84");
+        for (ShadowOptions options : List.of(ShadowOptions.DEFAULTS, ShadowOptions.DEFAULTS.withSoftShadows(true),
+                ShadowOptions.DEFAULTS.withEarthCurvature(true))) {
+            for (double a : new double[] {160, 300}) {
+                LightDirection light = new LightDirection(a, 5);
+                float[] m1 = ShadowAlgorithm.SWEEP.compute(dem, light, options, one).backingArray();
+                float[] m2 = ShadowAlgorithm.SWEEP.compute(dem, light, options, two).backingArray();
+                float[] m3 = ShadowAlgorithm.SWEEP.compute(dem, light, options, three).backingArray();
+                assertEquals(0, differences(m1, m2), options + " az " + a);
+                assertEquals(0, differences(m1, m3), options + " az " + a);
+            }
+        }
+    }
+
+    @Test
+    void windowEqualsWholeOnRealDems() throws IOException {
+        Random rnd = new Random(4);
+        for (String name : List.of("jacksboro_srtm3s_wgs84", "luxembourg_srtm30s_wgs84",
+                "maungawhau-volcano_10m_nztm-approx")) {
+            Dem dem = real(name);
+            for (double e : ELEVATIONS) {
+                for (double a : AZIMUTHS) {
+                    LightDirection light = new LightDirection(a, e);
+                    assertWindowsMatch(dem, light, ShadowOptions.DEFAULTS, rnd, 3, name);
+                }
+            }
+        }
+    }
+
+    /**
+     * Windows of seeded rough DEMs with no-data stripes, on metric and geographic grids, some with curvature: the
+     * configurations where an earlier sweep let terrain beyond the halo tip the interpolation between two lines.
+     */
+    @Test
+    void windowEqualsWholeOnSyntheticDems() {
+        Random rnd = new Random(1);
+        for (int t = 0; t < 400; t++) {
+            Dem dem = synthetic(rnd, rnd.nextBoolean());
+            LightDirection light = new LightDirection(rnd.nextDouble() * 360, 1 + rnd.nextDouble() * 60);
+            ShadowOptions options = rnd.nextInt(4) == 0
+                    ? ShadowOptions.DEFAULTS.withEarthCurvature(true, 0.13, 1e5) : ShadowOptions.DEFAULTS;
+            assertWindowsMatch(dem, light, options, rnd, 10, "trial " + t);
+        }
+    }
+
+    private static void assertWindowsMatch(Dem dem, LightDirection light, ShadowOptions options, Random rnd,
+                                           int windows, String what) {
+        ShadowMask whole = ShadowAlgorithm.SWEEP.compute(dem, light, options, two);
+        int width = dem.width();
+        int height = dem.height();
+        for (int q = 0; q < windows; q++) {
+            int w = 1 + rnd.nextInt(width);
+            int h = 1 + rnd.nextInt(height);
+            CellWindow window = new CellWindow(rnd.nextInt(width - w + 1), rnd.nextInt(height - h + 1), w, h);
+            ShadowMask part = ShadowAlgorithm.SWEEP.computeWindow(dem, light, options, q % 2 == 0 ? one : two,
+                    window);
+            List<String> bad = new ArrayList<>();
+            for (int r = 0; r < h; r++) {
+                for (int c = 0; c < w; c++) {
+                    float expected = whole.get(window.col() + c, window.row() + r);
+                    if (Float.compare(part.get(c, r), expected) != 0 && bad.size() < 5) {
+                        bad.add("(" + (window.col() + c) + ", " + (window.row() + r) + ")");
+                    }
+                }
+            }
+            assertTrue(bad.isEmpty(), what + " " + light + " " + window + " differs at " + bad);
+        }
+    }
+
+    /** Rough terrain 20–170 cells a side with up to three no-data stripes, metric or geographic (20–60° N). */
+    private static Dem synthetic(Random rnd, boolean geographic) {
+        int w = 20 + rnd.nextInt(150);
+        int h = 20 + rnd.nextInt(150);
+        float[] v = new float[w * h];
+        double fx = rnd.nextDouble() * 0.3;
+        double fy = rnd.nextDouble() * 0.3;
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                v[y * w + x] = (float) (100 * Math.sin(x * fx) * Math.cos(y * fy) + 50 * rnd.nextDouble());
+            }
+        }
+        int stripes = rnd.nextInt(4);
+        for (int s = 0; s < stripes; s++) {
+            int from = rnd.nextInt(Math.max(w, h));
+            int span = 1 + rnd.nextInt(20);
+            boolean vertical = rnd.nextBoolean();
+            for (int y = 0; y < h; y++) {
+                for (int x = 0; x < w; x++) {
+                    int at = vertical ? x : y;
+                    if (at >= from && at < from + span) {
+                        v[y * w + x] = Float.NaN;
+                    }
+                }
+            }
+        }
+        GridGeometry g = geographic
+                ? new GridGeometry(w, h, 10, 60 - rnd.nextDouble() * 40, 0.001, 0.001,
+                        CrsInfo.geographic("WGS 84", 4326, Ellipsoid.WGS84), PixelAnchor.CORNER)
+                : GridGeometry.metric(w, h, 30);
+        return new Dem(v, g);
+    }
+}
