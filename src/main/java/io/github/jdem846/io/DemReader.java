@@ -44,6 +44,20 @@ public final class DemReader {
 
     /** Reads like {@link #read(Path, ReadRequest)} and also returns the file's header information. */
     public static LoadedDem load(Path file, ReadRequest request) throws IOException {
+        return load(file, request, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
+    }
+
+    /** Fewest cells for a separately read part: below this, opening another reader costs more than it saves. */
+    static final long MIN_CELLS_PER_PART = 1L << 21;
+
+    /**
+     * Reads like {@link #load(Path, ReadRequest)}, in up to {@code parallelism} row bands at once when the format
+     * decodes rows independently ({@link RasterSource#readsRowsIndependently}), each band through its own reader
+     * and with at least {@code minCellsPerPart} cells. The bands start at multiples of the decimation (and of the
+     * format's row block), so the result is the same as one sequential read.
+     */
+    static LoadedDem load(Path file, ReadRequest request, int parallelism, long minCellsPerPart)
+            throws IOException {
         Objects.requireNonNull(request, "request");
         try (RasterSource source = open(file)) {
             DemInfo info = source.info();
@@ -56,14 +70,84 @@ public final class DemReader {
             MemoryGuard.requireFits(file, outW, outH, BlockReader.bandBytes(source, cells, d), "read a window or a"
                     + " decimated version, or give Java more heap with -Xmx");
             float[] values = new float[outW * outH];
-            BlockReader.read(source, cells, d, info.noDataOrNaN(),
-                    (row, v) -> System.arraycopy(v, 0, values, row * outW, outW));
+            int unit = d * Math.max(1, source.naturalRowBlock()) / gcd(d, Math.max(1, source.naturalRowBlock()));
+            long units = (cells.height() + unit - 1) / unit;
+            long byCells = (long) cells.width() * cells.height() / Math.max(1, minCellsPerPart);
+            int parts = source.readsRowsIndependently()
+                    ? (int) Math.max(1, Math.min(Math.min(parallelism, units), byCells)) : 1;
+            if (parts == 1) {
+                readPart(source, cells, d, info.noDataOrNaN(), values, 0, outW);
+            } else {
+                readParts(file, source, cells, d, info.noDataOrNaN(), values, outW, parts,
+                        (int) ((units + parts - 1) / parts) * unit);
+            }
             GridGeometry g = info.geometry().window(cells.col(), cells.row(), cells.width(), cells.height());
             if (d > 1) {
                 g = g.decimate(d, d);
             }
             return new LoadedDem(info, Dem.ofNormalized(values, g, info.noDataOrNaN()));
         }
+    }
+
+    /** Reads {@code cells} of {@code source} into {@code values} from output row {@code outRow0} on. */
+    private static void readPart(RasterSource source, Window.Cells cells, int d, double noData, float[] values,
+                                 int outRow0, int outW) throws IOException {
+        BlockReader.read(source, cells, d, noData,
+                (row, v) -> System.arraycopy(v, 0, values, (outRow0 + row) * outW, outW));
+    }
+
+    /**
+     * Reads {@code cells} in bands of {@code rowsPerPart} rows at once: the first through {@code first} on the
+     * calling thread, the others each through a reader of its own on a thread of its own.
+     */
+    private static void readParts(Path file, RasterSource first, Window.Cells cells, int d, double noData,
+                                  float[] values, int outW, int parts, int rowsPerPart) throws IOException {
+        java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(parts - 1,
+                r -> {
+                    Thread t = new Thread(r, "jdem846-read");
+                    t.setDaemon(true);
+                    return t;
+                });
+        try {
+            java.util.List<java.util.concurrent.Future<Void>> others = new java.util.ArrayList<>();
+            for (int p = 1; p < parts; p++) {
+                int row0 = p * rowsPerPart;
+                if (row0 >= cells.height()) {
+                    break;
+                }
+                Window.Cells part = new Window.Cells(cells.col(), cells.row() + row0, cells.width(),
+                        Math.min(rowsPerPart, cells.height() - row0));
+                others.add(pool.submit(() -> {
+                    try (RasterSource own = open(file)) {
+                        readPart(own, part, d, noData, values, row0 / d, outW);
+                    }
+                    return null;
+                }));
+            }
+            readPart(first, new Window.Cells(cells.col(), cells.row(), cells.width(),
+                    Math.min(rowsPerPart, cells.height())), d, noData, values, 0, outW);
+            for (java.util.concurrent.Future<Void> f : others) {
+                f.get();
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new java.io.InterruptedIOException("reading " + file + " was interrupted");
+        } catch (java.util.concurrent.ExecutionException e) {
+            Throwable cause = e.getCause();
+            if (cause instanceof IOException io) {
+                throw io;
+            }
+            if (cause instanceof RuntimeException re) {
+                throw re;
+            }
+            throw new IllegalStateException(cause);
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    private static int gcd(int a, int b) {
+        return b == 0 ? a : gcd(b, a % b);
     }
 
     /** Reads the header only: format, size, data type, georeferencing, CRS and declared no-data. */

@@ -145,6 +145,12 @@ final class GeoTiffSource implements RasterSource {
         return Math.max(1L << 22, Math.min(1L << 25, Runtime.getRuntime().maxMemory() / 64));
     }
 
+    /** With subsetting each read decodes only its own strips or tiles. */
+    @Override
+    public boolean readsRowsIndependently() {
+        return layout != null;
+    }
+
     @Override
     public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
         if (layout != null) {

@@ -37,6 +37,14 @@ interface RasterSource extends Closeable {
         return 1L << 20;
     }
 
+    /**
+     * True when disjoint row bands can be read at the same time through separately opened sources, each decoding
+     * only its own rows (raw rows; TIFF strips or tiles with subsetting).
+     */
+    default boolean readsRowsIndependently() {
+        return false;
+    }
+
     @Override
     void close() throws IOException;
 }

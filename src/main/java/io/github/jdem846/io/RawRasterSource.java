@@ -126,6 +126,11 @@ final class RawRasterSource implements RasterSource {
     }
 
     @Override
+    public boolean readsRowsIndependently() {
+        return true;
+    }
+
+    @Override
     public void close() throws IOException {
         channel.close();
     }
