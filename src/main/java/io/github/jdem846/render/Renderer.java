@@ -134,8 +134,14 @@ public final class Renderer {
     /**
      * The single-band gray hillshade product: {@link HillshadeMethod#gray} of every cell's illumination (0 =
      * no-data), computed and converted tile by tile, so it equals {@code method.toGray(illumination(…))} without
-     * holding the float layer; of the cells of {@code area} only (row length {@code area.width()}).
+     * holding the float layer.
      */
+    public byte[] hillshadeGray(Dem dem, HillshadeMethod method, HillshadeOptions options, LightField light,
+                                RenderProgress progress) throws InterruptedException {
+        return hillshadeGray(dem, method, options, light, CellWindow.whole(dem.width(), dem.height()), progress);
+    }
+
+    /** {@link #hillshadeGray(Dem, HillshadeMethod, HillshadeOptions, LightField, RenderProgress)} of {@code area}. */
     public byte[] hillshadeGray(Dem dem, HillshadeMethod method, HillshadeOptions options, LightField light,
                                 CellWindow area, RenderProgress progress) throws InterruptedException {
         Objects.requireNonNull(method, "method");

@@ -64,7 +64,7 @@ class RendererTest {
             byte[] expected = method.toGray(dot, options);
             for (int tile : new int[] {16, 33, 4096}) {
                 byte[] gray = new Renderer(new RenderSettings(2, tile)).hillshadeGray(LUX, method, options, light,
-                        io.github.jdem846.shadow.CellWindow.whole(LUX.width(), LUX.height()), RenderProgress.NONE);
+                        RenderProgress.NONE);
                 assertArrayEquals(expected, gray, method + ", tile " + tile);
             }
         }
