@@ -27,7 +27,7 @@ record StudyDem(String name, String description, Dem dem) {
     static {
         DESCRIPTIONS.put("bigtujunga", "Big Tujunga SRTM 30 m (UTM 11N), 1197×643");
         DESCRIPTIONS.put("bigtujunga-210m", "Big Tujunga area-averaged 7×7 (DemResampler) to 171×92, ≈ 210 m cells");
-        DESCRIPTIONS.put("jacksboro", "Jacksboro SRTM 3″ (lat/lon, ≈ 74 × 93 m), 403×344");
+        DESCRIPTIONS.put("jacksboro", "Jacksboro SRTM 3″ (lat/lon, ≈ 74 × 92 m), 403×344");
         DESCRIPTIONS.put("luxembourg", "Luxembourg 30″ (lat/lon), 95×90, no-data outside the border");
         DESCRIPTIONS.put("vancouver", "Vancouver Island topo-bathy 2′ (Mercator), 120×91");
         DESCRIPTIONS.put("maungawhau", "Maungawhau volcano 10 m, 61×87");
