@@ -611,9 +611,13 @@ final class SunSweep {
         return bilinear ? TerrainSampler.bilinear(v, w, h, x, y) : TerrainSampler.nearest(v, w, h, x, y);
     }
 
-    /** Offsets t of the first-cell samples: eighths up to one cell, or just the one-cell sample. */
+    /**
+     * Offsets t of the first-cell samples: eighths up to one cell on the bilinear surface, else just the one-cell
+     * sample. With nearest sampling the eighths would meet the next cell's block from t = ½ on while the ray is
+     * still only half a step up, shading cells that the nearest march leaves lit (notes/sweep-bugs.md item 1).
+     */
     private int firstSample() {
-        return firstCellTest ? 1 : SUB_STEPS;
+        return firstCellTest && bilinear ? 1 : SUB_STEPS;
     }
 
     /** True when the ray from cell (i, j) is blocked within its first major step. */

@@ -111,6 +111,28 @@ class SunSweepConsistencyTest {
         }
     }
 
+    /**
+     * With nearest sampling, on the axes and the diagonal of square cells (lines through cell centres) the sweep is
+     * the one-cell nearest march: the first-cell test must then look only at the next cell, not at eighths of it.
+     */
+    @Test
+    void nearestSweepEqualsOneCellNearestMarchOnAxes() throws IOException {
+        Dem dem = real("bigtujunga_srtm30m_utm11n").crop(420, 120, 300, 200);
+        ShadowOptions nearest = ShadowOptions.DEFAULTS.withSampling(Sampling.NEAREST);
+        long shadowed = 0;
+        for (double a : new double[] {0, 45, 90, 180, 270}) {
+            for (double e : new double[] {5, 20}) {
+                LightDirection light = new LightDirection(a, e);
+                ShadowMask sweep = ShadowAlgorithm.SWEEP.compute(dem, light, nearest, two);
+                ShadowMask march = ShadowAlgorithm.MARCH.compute(dem, light, nearest.withStep(StepSize.ONE_CELL),
+                        two);
+                assertEquals(0, differences(sweep.backingArray(), march.backingArray()), "az " + a + " el " + e);
+                shadowed += march.shadowedCount();
+            }
+        }
+        assertTrue(shadowed > 1000, "the comparison must include shadowed cells, got " + shadowed);
+    }
+
     @Test
     void sameMaskForAnyPoolSize() throws IOException {
         Dem dem = real("jacksboro_srtm3s_wgs84");

@@ -1,0 +1,109 @@
+package io.github.jdem846.bench;
+
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.shadow.ShadowAlgorithm;
+import io.github.jdem846.shadow.ShadowMask;
+import io.github.jdem846.shadow.ShadowOptions;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+import org.openjdk.jmh.annotations.Warmup;
+
+/**
+ * Cast shadows of the whole seeded fractal DEM ({@link FractalDem}, seed 846, 30 m cells), sun at azimuth 300°
+ * (off the grid axes and diagonals), on a pool of one thread: the score is milliseconds per whole grid, so
+ * score / cells is the cost of one ray ({@code march}, {@code exact}) or of one cell ({@code sweep}).
+ * {@code exact} runs at 512² only.
+ *
+ * <pre>./mvnw -B -o -q -Pjmh package -DskipTests
+ * java -jar target/benchmarks.jar RayTraceBenchmark -f 1 -wi 2 -i 3</pre>
+ */
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+@Warmup(iterations = 2, time = 1)
+@Measurement(iterations = 3, time = 1)
+@Fork(1)
+public class RayTraceBenchmark {
+
+    /** Sun azimuth of every run, degrees. */
+    public static final double AZIMUTH = 300;
+
+    /** A fractal DEM of {@code size}², the sun and a one-thread pool. */
+    @State(Scope.Benchmark)
+    public static class Grid {
+        @Param({"512", "2048"})
+        public int size;
+
+        @Param({"2", "5", "20", "45"})
+        public double elevation;
+
+        Dem dem;
+        LightDirection light;
+        ForkJoinPool pool;
+
+        @Setup(Level.Trial)
+        public void setUp() {
+            dem = FractalDem.dem(size, 846L);
+            light = new LightDirection(AZIMUTH, elevation);
+            pool = new ForkJoinPool(1);
+        }
+
+        @TearDown(Level.Trial)
+        public void tearDown() {
+            pool.shutdownNow();
+        }
+    }
+
+    /** {@link Grid} at 512² only, for the slow reference. */
+    @State(Scope.Benchmark)
+    public static class SmallGrid {
+        @Param({"2", "5", "20", "45"})
+        public double elevation;
+
+        Dem dem;
+        LightDirection light;
+        ForkJoinPool pool;
+
+        @Setup(Level.Trial)
+        public void setUp() {
+            dem = FractalDem.dem(512, 846L);
+            light = new LightDirection(AZIMUTH, elevation);
+            pool = new ForkJoinPool(1);
+        }
+
+        @TearDown(Level.Trial)
+        public void tearDown() {
+            pool.shutdownNow();
+        }
+    }
+
+    /** The article's march: its step (eq. 9) and nearest-cell sampling. */
+    @Benchmark
+    public ShadowMask march(Grid g) {
+        return ShadowAlgorithm.MARCH.compute(g.dem, g.light, ShadowOptions.DEFAULTS, g.pool);
+    }
+
+    /** The O(cells) sweep, bilinear, with the first-cell test (the defaults). */
+    @Benchmark
+    public ShadowMask sweep(Grid g) {
+        return ShadowAlgorithm.SWEEP.compute(g.dem, g.light, ShadowOptions.DEFAULTS, g.pool);
+    }
+
+    /** The reference: eighth-cell steps on the bilinear surface. */
+    @Benchmark
+    public ShadowMask exact(SmallGrid g) {
+        return ShadowAlgorithm.EXACT.compute(g.dem, g.light, ShadowOptions.DEFAULTS, g.pool);
+    }
+}
