@@ -43,6 +43,10 @@ for n in 1000 2000; do
         -n "saga_cmd ta_lighting 0 (shadows only) ${n}²" "$(saga fractal$n.tif saga$n.tif)"
 done
 
+# 3b. The article's march on the whole 4000² (tens of seconds per run): two runs, no warm-up.
+flock -x /tmp/cpu.lock hyperfine -N --warmup 0 --runs 2 --export-markdown t4000march.md --export-json t4000march.json \
+    -n "jdem846 shadows march (article) 4000²" "$(ours fractal4000.tif march march4000.tif)"
+
 # 4. Masks: ours 0/255, SAGA's π/2 where shadowed and no-data (-99999) where lit; both to raw bytes.
 for n in 1000 2000 4000; do
     gdal_translate -q -of ENVI -ot Byte ours$n.tif ours$n.raw

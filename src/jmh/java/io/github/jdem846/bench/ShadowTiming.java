@@ -1,0 +1,56 @@
+package io.github.jdem846.bench;
+
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.shadow.ShadowAlgorithm;
+import io.github.jdem846.shadow.ShadowMask;
+import io.github.jdem846.shadow.ShadowOptions;
+import java.util.Locale;
+import java.util.concurrent.ForkJoinPool;
+
+/**
+ * Wall time of one shadow computation in a fresh JVM, the first (cold: interpreter and JIT warm-up included, as in
+ * one CLI run) and the best of the following ones, on the seeded fractal DEM. Complements {@link RayTraceBenchmark}
+ * (one thread, warm) with the multi-threaded numbers a CLI run sees.
+ *
+ * <pre>java -cp target/benchmarks.jar io.github.jdem846.bench.ShadowTiming SIZE ALGORITHM AZIMUTH ELEVATION THREADS RUNS</pre>
+ */
+public final class ShadowTiming {
+
+    private ShadowTiming() {
+    }
+
+    public static void main(String[] args) {
+        if (args.length != 6) {
+            System.err.println("usage: ShadowTiming SIZE ALGORITHM AZIMUTH ELEVATION THREADS RUNS");
+            System.exit(2);
+        }
+        int size = Integer.parseInt(args[0]);
+        ShadowAlgorithm algorithm = ShadowAlgorithm.parse(args[1]);
+        LightDirection light = new LightDirection(Double.parseDouble(args[2]), Double.parseDouble(args[3]));
+        int threads = Integer.parseInt(args[4]);
+        int runs = Integer.parseInt(args[5]);
+        Dem dem = FractalDem.dem(size, 846L);
+        dem.statistics();
+        ForkJoinPool pool = new ForkJoinPool(threads);
+        double first = 0;
+        double best = Double.POSITIVE_INFINITY;
+        long shadowed = 0;
+        for (int r = 0; r < runs; r++) {
+            long t0 = System.nanoTime();
+            ShadowMask mask = algorithm.compute(dem, light, ShadowOptions.DEFAULTS, pool);
+            double ms = (System.nanoTime() - t0) / 1e6;
+            shadowed = mask.shadowedCount();
+            if (r == 0) {
+                first = ms;
+            } else {
+                best = Math.min(best, ms);
+            }
+        }
+        pool.shutdown();
+        double cells = (double) size * size;
+        System.out.printf(Locale.ROOT, "%s %d² sun %s/%s threads %d: first %.1f ms (%.1f Mcells/s), best of %d more"
+                        + " %.1f ms (%.1f Mcells/s), shadowed %.3f %%%n", algorithm.cliName(), size, args[2], args[3],
+                threads, first, cells / first / 1e3, runs - 1, best, cells / best / 1e3, 100.0 * shadowed / cells);
+    }
+}
