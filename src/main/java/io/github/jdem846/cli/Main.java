@@ -43,6 +43,7 @@ public final class Main implements Runnable {
         if (!java.util.Arrays.asList(args).contains("--verbose")) {
             quietLibraryLogs();
         }
+        CrsWarmUp.start();
         System.exit(commandLine().execute(args));
     }
 

@@ -2,9 +2,10 @@ package io.github.jdem846.cli;
 
 import picocli.CommandLine.Option;
 
-/** {@code --verbose}: print stack traces of failures (mix into every subcommand). */
+/** {@code --verbose}: print stack traces of failures and phase timings (mix into every subcommand). */
 public final class VerboseOption {
-    @Option(names = "--verbose", description = "Print the full stack trace when something fails.")
+    @Option(names = "--verbose", description = "Print the full stack trace when something fails, and the time "
+            + "each phase took (hillshade, tint, render).")
     boolean verbose;
 
     /** True when {@code --verbose} was given. */

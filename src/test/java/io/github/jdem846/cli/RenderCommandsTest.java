@@ -37,6 +37,20 @@ class RenderCommandsTest {
     }
 
     @Test
+    void verbosePrintsThePhaseTimesAndQuietRunsDoNot() {
+        for (String[] command : new String[][] {{"hillshade", LUX}, {"tint", LUX}, {"render", LUX}}) {
+            Path out = dir.resolve(command[0] + ".png");
+            CliRun verbose = CliRun.of(command[0], command[1], "-o", out.toString(), "--verbose");
+            assertEquals(0, verbose.exitCode(), verbose.err());
+            assertTrue(verbose.err().matches("(?s).*jdem846: timing: start-up -?\\d+ ms, read \\d+ ms, "
+                    + command[0] + " \\d+ ms, write \\d+ ms; total \\d+ ms.*"), verbose.err());
+            CliRun quiet = CliRun.of(command[0], command[1], "-o", out.toString());
+            assertEquals(0, quiet.exitCode(), quiet.err());
+            assertFalse(quiet.err().contains("timing"), quiet.err());
+        }
+    }
+
+    @Test
     void targetWidthKeepsTheAspectRatio() throws IOException {
         Path out = dir.resolve("small.png");
         CliRun run = CliRun.of("render", BT, "-o", out.toString(), "--width", "300");
