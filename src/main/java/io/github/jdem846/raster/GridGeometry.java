@@ -32,6 +32,7 @@ public final class GridGeometry {
     private final double cellHeight;
     private final CrsInfo crs;
     private final PixelAnchor declaredAnchor;
+    private final Placement placement;
     private volatile Optional<GeoLocator> locator; // derived from crs, built on first use
 
     /**
@@ -64,6 +65,43 @@ public final class GridGeometry {
         this.cellHeight = cellHeight;
         this.crs = Objects.requireNonNull(crs, "crs");
         this.declaredAnchor = Objects.requireNonNull(declaredAnchor, "declaredAnchor");
+        this.placement = new Placement(0, 0, width, height);
+    }
+
+    private GridGeometry(GridGeometry g, int width, int height, double originX, double originY, Placement placement) {
+        this(width, height, originX, originY, g.cellWidth, g.cellHeight, g.crs, g.declaredAnchor, placement);
+    }
+
+    private GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
+                         CrsInfo crs, PixelAnchor declaredAnchor, Placement placement) {
+        this.width = width;
+        this.height = height;
+        this.originX = originX;
+        this.originY = originY;
+        this.cellWidth = cellWidth;
+        this.cellHeight = cellHeight;
+        this.crs = crs;
+        this.declaredAnchor = declaredAnchor;
+        this.placement = placement;
+    }
+
+    /**
+     * Where a grid lies in the grid it was cut from by {@link #window} (through any number of windows): its first
+     * column and row there, and that grid's size. A grid made any other way is its own root: (0, 0, its size).
+     * Algorithms whose sampling depends on where a grid starts (the shadow sweep's lines) use it so that a window
+     * gives the same answers as the grid it was cut from.
+     *
+     * @param col        first column in the root grid (negative when the window reaches past its west edge)
+     * @param row        first row in the root grid
+     * @param rootWidth  the root grid's columns
+     * @param rootHeight the root grid's rows
+     */
+    public record Placement(int col, int row, int rootWidth, int rootHeight) {
+    }
+
+    /** Where this grid lies in the grid it was cut from (see {@link Placement}). */
+    public Placement placement() {
+        return placement;
     }
 
     /** A grid with unknown CRS whose cells are {@code cellSizeMeters} metres square (for DEMs made in memory). */
@@ -220,8 +258,12 @@ public final class GridGeometry {
      * extend past the grid (callers clip first when they must not).
      */
     public GridGeometry window(int col, int row, int w, int h) {
-        return new GridGeometry(w, h, originX + col * cellWidth, originY - row * cellHeight, cellWidth, cellHeight,
-                crs, declaredAnchor);
+        if (w < 1 || h < 1) {
+            throw new IllegalArgumentException("grid size must be at least 1×1, got " + w + "×" + h);
+        }
+        return new GridGeometry(this, w, h, originX + col * cellWidth, originY - row * cellHeight,
+                new Placement(placement.col() + col, placement.row() + row, placement.rootWidth(),
+                        placement.rootHeight()));
     }
 
     /**
@@ -257,7 +299,8 @@ public final class GridGeometry {
 
     /** A copy with another CRS. */
     public GridGeometry withCrs(CrsInfo newCrs) {
-        return new GridGeometry(width, height, originX, originY, cellWidth, cellHeight, newCrs, declaredAnchor);
+        return new GridGeometry(width, height, originX, originY, cellWidth, cellHeight,
+                Objects.requireNonNull(newCrs, "crs"), declaredAnchor, placement);
     }
 
     @Override

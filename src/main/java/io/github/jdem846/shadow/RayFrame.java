@@ -9,7 +9,8 @@ import io.github.jdem846.raster.GridGeometry;
  * length of a step per row, the slope of the ray and the curvature drop.
  *
  * <p>The direction is built straight from sin and cos of the azimuth (not eq. 10's chain of square roots) and the
- * metric cell sizes of the grid's middle row: east = sin a / cellWidthMeters, south = −cos a / cellHeightMeters.
+ * metric cell sizes of the middle row of the grid (of the grid it was cut from, for a window): east = sin a /
+ * cellWidthMeters, south = −cos a / cellHeightMeters.
  * It is scaled so that its larger component is exactly ±1: one "major step" moves one column or one row. The metric
  * length of a major step is then computed per row, so lat/lon grids get the right shadow length at every latitude
  * (the original stepped in flat degrees).
@@ -43,7 +44,9 @@ final class RayFrame {
     RayFrame(GridGeometry g, double zMax, LightDirection light, ShadowOptions opt) {
         this.width = g.width();
         this.height = g.height();
-        int refRow = height / 2;
+        // the direction in grid units from the middle row of the grid this one was cut from (if it was), so that
+        // a window of a lat/lon grid traces the same rays as the whole grid
+        int refRow = g.placement().rootHeight() / 2 - g.placement().row();
         double wRef = positive(g.cellWidthMeters(refRow), g.cellHeightMeters(refRow));
         double hRef = positive(g.cellHeightMeters(refRow), wRef);
         double az = Math.toRadians(light.azimuthDegrees());

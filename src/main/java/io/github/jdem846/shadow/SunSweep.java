@@ -1,6 +1,7 @@
 package io.github.jdem846.shadow;
 
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.GridGeometry;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
@@ -92,12 +93,19 @@ final class SunSweep {
             c0 = cj > 0 ? 0 : w - 1;
             m = Math.abs(frame.ux);
         }
+        // Lines are laid from the downstream edge of the grid this one was cut from (GridGeometry.placement):
+        // position m·(i + i0), i0 = where frame column 0 lies in that grid's frame, so a window samples exactly the
+        // same positions, bit for bit, as the whole grid (phase φ = frac(m·i0) in [0, 1); 0 for a whole grid).
+        GridGeometry.Placement at = dem.geometry().placement();
+        long i0 = frame.xMajor ? (ci > 0 ? at.col() : (long) at.rootWidth() - w - at.col())
+                : (ri > 0 ? at.row() : (long) at.rootHeight() - h - at.row());
+        double base = Math.floor(m * i0);
         pf = new int[nMaj];
         pr = new double[nMaj];
         for (int i = 0; i < nMaj; i++) {
-            double p = m * i;
+            double p = m * (double) (i + i0);
             double fl = Math.floor(p);
-            pf[i] = (int) fl;
+            pf[i] = (int) (fl - base);
             pr[i] = p - fl;
         }
         baseI = new int[nMaj];
@@ -257,12 +265,12 @@ final class SunSweep {
         double bc = f.curvature;
         int wi0 = w.wi0;
         int iTop = w.iTop;
-        // i range where the line is on (or within half a cell of) the grid: −1 < k + m·i < nMin
+        // i range where the line is on (or within half a cell of) the grid: −1 < k + m·i + φ < nMin, φ in [0, 1)
         int iHi = iTop;
         int iLo = wi0;
         if (m > 0) {
             iHi = (int) Math.min(iTop, Math.floor((nMin - k) / m) + 1);
-            iLo = (int) Math.max(wi0, Math.ceil((-1 - k) / m) - 1);
+            iLo = (int) Math.max(wi0, Math.ceil((-2 - k) / m) - 1);
         } else if (k < -1 || k > nMin - 1) {
             iHi = iLo - 1;
         }
@@ -408,7 +416,7 @@ final class SunSweep {
         int iEnd = w.wi0;
         if (m > 0) {
             iStart = (int) Math.min(iStart, Math.floor((nMin - kFrom) / m) + 1);
-            iEnd = (int) Math.max(iEnd, Math.ceil((w.wj0 - kTo - 1) / m) - 1);
+            iEnd = (int) Math.max(iEnd, Math.ceil((w.wj0 - kTo - 2) / m) - 1);
         } else if (kTo + 1 < -1 || kFrom > nMin - 1) {
             return;
         }
@@ -548,9 +556,9 @@ final class SunSweep {
         int iLo = w.wi0;
         int iHi = w.wi1;
         if (m > 0) {
-            // cells j = k + floor(m·i) (+1) with wj0 ≤ j ≤ wj1
+            // cells j = k + floor(m·i + φ) (+1) with wj0 ≤ j ≤ wj1
             iHi = (int) Math.min(iHi, Math.floor((w.wj1 - k + 1) / m) + 1);
-            iLo = (int) Math.max(iLo, Math.ceil((w.wj0 - k - 1) / m) - 1);
+            iLo = (int) Math.max(iLo, Math.ceil((w.wj0 - k - 2) / m) - 1);
         }
         for (int i = iLo; i <= iHi; i++) {
             double fr = pr[i];

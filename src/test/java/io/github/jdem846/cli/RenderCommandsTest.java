@@ -124,18 +124,21 @@ class RenderCommandsTest {
 
     @Test
     void aWindowedRenderEqualsTheSameWindowOfTheFullRender() throws IOException {
-        Path full = dir.resolve("full.png");
-        Path part = dir.resolve("part.png");
-        String[] common = {"--shadows", "march", "--sun-azimuth", "250", "--sun-elevation", "6"};
-        assertEquals(0, CliRun.of(concat(new String[] {"render", BT, "-o", full.toString()}, common)).exitCode());
-        CliRun run = CliRun.of(concat(new String[] {"render", BT, "-o", part.toString(), "--window",
-            "cells:500,200,160,120"}, common));
-        assertEquals(0, run.exitCode(), run.err());
-        BufferedImage a = ImageIO.read(full.toFile()).getSubimage(500, 200, 160, 120);
-        BufferedImage b = ImageIO.read(part.toFile());
-        assertEquals(160, b.getWidth());
-        assertEquals(120, b.getHeight());
-        assertArrayEquals(a.getRGB(0, 0, 160, 120, null, 0, 160), b.getRGB(0, 0, 160, 120, null, 0, 160));
+        for (String algorithm : new String[] {"march", "sweep"}) {
+            Path full = dir.resolve(algorithm + "-full.png");
+            Path part = dir.resolve(algorithm + "-part.png");
+            String[] common = {"--shadows", algorithm, "--sun-azimuth", "250", "--sun-elevation", "6"};
+            assertEquals(0, CliRun.of(concat(new String[] {"render", BT, "-o", full.toString()}, common)).exitCode());
+            CliRun run = CliRun.of(concat(new String[] {"render", BT, "-o", part.toString(), "--window",
+                "cells:500,200,160,120"}, common));
+            assertEquals(0, run.exitCode(), run.err());
+            BufferedImage a = ImageIO.read(full.toFile()).getSubimage(500, 200, 160, 120);
+            BufferedImage b = ImageIO.read(part.toFile());
+            assertEquals(160, b.getWidth());
+            assertEquals(120, b.getHeight());
+            assertArrayEquals(a.getRGB(0, 0, 160, 120, null, 0, 160), b.getRGB(0, 0, 160, 120, null, 0, 160),
+                    algorithm);
+        }
     }
 
     @Test
