@@ -47,6 +47,16 @@ public final class GridGeometry {
      */
     public GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
                         CrsInfo crs, PixelAnchor declaredAnchor) {
+        this(width, height, originX, originY, cellWidth, cellHeight, crs, declaredAnchor,
+                new Placement(0, 0, Math.max(width, 1), Math.max(height, 1)));
+    }
+
+    private GridGeometry(GridGeometry g, int width, int height, double originX, double originY, Placement placement) {
+        this(width, height, originX, originY, g.cellWidth, g.cellHeight, g.crs, g.declaredAnchor, placement);
+    }
+
+    private GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
+                         CrsInfo crs, PixelAnchor declaredAnchor, Placement placement) {
         if (width < 1 || height < 1) {
             throw new IllegalArgumentException("grid size must be at least 1×1, got " + width + "×" + height);
         }
@@ -65,23 +75,6 @@ public final class GridGeometry {
         this.cellHeight = cellHeight;
         this.crs = Objects.requireNonNull(crs, "crs");
         this.declaredAnchor = Objects.requireNonNull(declaredAnchor, "declaredAnchor");
-        this.placement = new Placement(0, 0, width, height);
-    }
-
-    private GridGeometry(GridGeometry g, int width, int height, double originX, double originY, Placement placement) {
-        this(width, height, originX, originY, g.cellWidth, g.cellHeight, g.crs, g.declaredAnchor, placement);
-    }
-
-    private GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
-                         CrsInfo crs, PixelAnchor declaredAnchor, Placement placement) {
-        this.width = width;
-        this.height = height;
-        this.originX = originX;
-        this.originY = originY;
-        this.cellWidth = cellWidth;
-        this.cellHeight = cellHeight;
-        this.crs = crs;
-        this.declaredAnchor = declaredAnchor;
         this.placement = placement;
     }
 
@@ -258,9 +251,6 @@ public final class GridGeometry {
      * extend past the grid (callers clip first when they must not).
      */
     public GridGeometry window(int col, int row, int w, int h) {
-        if (w < 1 || h < 1) {
-            throw new IllegalArgumentException("grid size must be at least 1×1, got " + w + "×" + h);
-        }
         return new GridGeometry(this, w, h, originX + col * cellWidth, originY - row * cellHeight,
                 new Placement(placement.col() + col, placement.row() + row, placement.rootWidth(),
                         placement.rootHeight()));
