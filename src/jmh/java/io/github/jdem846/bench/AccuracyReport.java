@@ -74,7 +74,7 @@ final class AccuracyReport {
             AccuracySummary.Cell sw = s.cell(dem, e, StudyMethod.SWEEP);
             AccuracySummary.Cell ma = s.cell(dem, e, StudyMethod.MARCH_ARTICLE);
             return sw == null || ma == null ? "–"
-                    : String.format(Locale.ROOT, "%.0f×", sw.mcellsPerSecond() / ma.mcellsPerSecond());
+                    : ratio(sw.mcellsPerSecond() / ma.mcellsPerSecond());
         });
         md.append("#### Sweep errors by kind: cells the sweep shades that exact lights / cells it lights that exact "
                 + "shades (summed over azimuths)\n\n");
@@ -155,11 +155,18 @@ final class AccuracyReport {
     }
 
     static String percentWithWorst(AccuracySummary.Cell c) {
+        if (c.worst().fraction() == 0) {
+            return "0";
+        }
         String mean = pct(100 * c.meanFraction());
         if (c.meanSe() > 0) {
             mean += " ± " + pct(100 * c.meanSe());
         }
         return mean + " (" + pct(100 * c.worst().fraction()) + " @" + AccuracyPlot.fmt(c.worst().azimuth()) + "°)";
+    }
+
+    private static String ratio(double r) {
+        return String.format(Locale.ROOT, r >= 10 ? "%.0f×" : "%.1f×", r);
     }
 
     private static String pct(double p) {
