@@ -88,20 +88,98 @@ public enum ShadowAlgorithm {
             }
             return new ShadowMask(ww, wh, out);
         }
-        RayFrame frame = new RayFrame(dem, light, options);
         switch (this) {
             case SWEEP -> {
-                boolean bilinear = options.sampling() != Sampling.NEAREST;
-                double relief = dem.statistics().max() - dem.statistics().min();
-                int halo = window.width() == dem.width() && window.height() == dem.height() ? Integer.MAX_VALUE
-                        : ShadowHalo.sweepSteps(frame, ShadowHalo.tileMin(dem, window), relief, light, options);
-                new SunSweep(dem, frame, bilinear, bilinear && options.firstCellTest()).run(window, halo, out,
-                        pool);
+                if (options.softShadows()) {
+                    softSweep(dem, light, options, pool, window, out);
+                } else {
+                    hardSweep(dem, light, options, pool, window, out);
+                }
             }
-            case MARCH, EXACT -> march(marcher(dem, frame, options), window, out, pool);
+            case MARCH, EXACT -> march(marcher(dem, new RayFrame(dem, light, options), options), window, out, pool);
             default -> throw new AssertionError(this);
         }
         return new ShadowMask(ww, wh, out);
+    }
+
+    /** Brackets across the sun's disk of the soft sweep: the horizon is placed within 1/16 of the disk's diameter. */
+    static final int SOFT_SWEEP_LEVELS = 16;
+
+    private static void hardSweep(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
+                                  CellWindow window, float[] out) {
+        RayFrame frame = new RayFrame(dem, light, options);
+        boolean bilinear = options.sampling() != Sampling.NEAREST;
+        double relief = dem.statistics().max() - dem.statistics().min();
+        int halo = window.width() == dem.width() && window.height() == dem.height() ? Integer.MAX_VALUE
+                : ShadowHalo.sweepSteps(frame, ShadowHalo.tileMin(dem, window), relief, light, options);
+        new SunSweep(dem, frame, bilinear, bilinear && options.firstCellTest()).run(window, halo, out, pool);
+    }
+
+    /**
+     * Soft shadows by hard sweeps: a hard sweep with the sun at elevation a answers, for every cell, whether the
+     * horizon toward the sun is above a. Sweeps at {@link #SOFT_SWEEP_LEVELS} + 1 angles from the lower to the upper
+     * limb (and at 0° when the disk straddles the horizon) bracket each cell's horizon; the hidden fraction is the
+     * disk's segment below the bracket's middle (1 above the upper limb, 0 below the lower). A level at or below 0°
+     * counts as blocked, as a sun at or below the horizon does everywhere, so a cell whose horizon lies between 0°
+     * and the next level takes 0°, the horizon of flat ground. Every level is the hard sweep itself, so the soft
+     * mask is consistent with the hard one (hidden fraction above ½ exactly where the hard sweep shades), and no
+     * horizon angle is read off the sweep's running maxima, which come from the occluder highest above the sun's
+     * slope rather than from the steepest one. Error: at most about 2/(π·levels) ≈ 0.04 of the disk.
+     */
+    private static void softSweep(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
+                                  CellWindow window, float[] out) {
+        ShadowOptions hard = options.withSoftShadows(false);
+        double e = light.elevationDegrees();
+        double r = options.sunDiameterDegrees() / 2;
+        java.util.TreeSet<Double> angles = new java.util.TreeSet<>();
+        for (int k = 0; k <= SOFT_SWEEP_LEVELS; k++) {
+            angles.add(e - r + 2 * r * k / SOFT_SWEEP_LEVELS);
+        }
+        if (e - r < 0 && e + r > 0) {
+            angles.add(0.0);
+        }
+        double[] levels = angles.stream().mapToDouble(Double::doubleValue).toArray();
+        int n = out.length;
+        int[] highestBlocked = new int[n];
+        java.util.Arrays.fill(highestBlocked, -1);
+        float[] level = new float[n];
+        float[] v = dem.backingArray();
+        for (int k = 0; k < levels.length; k++) {
+            double a = levels[k];
+            if (a >= 90) {
+                break;                                   // nothing rises above a sun at the zenith
+            }
+            if (a <= 0) {
+                for (int i = 0; i < n; i++) {            // at or below the horizon: every valid cell
+                    float z = v[(window.row() + i / window.width()) * dem.width() + window.col()
+                            + i % window.width()];
+                    level[i] = z == z ? 1f : 0f;
+                }
+            } else {
+                hardSweep(dem, new LightDirection(light.azimuthDegrees(), a), hard, pool, window, level);
+            }
+            boolean any = false;
+            for (int i = 0; i < n; i++) {
+                if (level[i] > 0.5f) {
+                    highestBlocked[i] = k;
+                    any = true;
+                }
+            }
+            if (!any) {
+                break;                                   // a higher sun is blocked nowhere either
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            int k = highestBlocked[i];
+            if (k < 0) {
+                out[i] = 0f;
+            } else if (k == levels.length - 1) {
+                out[i] = 1f;
+            } else {
+                double horizon = levels[k] == 0 ? 0 : 0.5 * (levels[k] + levels[k + 1]);
+                out[i] = (float) SunDisk.hiddenFraction(e, horizon, r);
+            }
+        }
     }
 
     /**
