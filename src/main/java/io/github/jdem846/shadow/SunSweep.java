@@ -63,6 +63,10 @@ final class SunSweep {
     }
 
     SunSweep(Dem dem, RayFrame frame, boolean bilinear, boolean firstCellTest, boolean lockstepAllowed) {
+        if (frame.soft()) {
+            throw new IllegalArgumentException("the sweep traces hard shadows; soft shadows are built from hard sweeps"
+                    + " at angles across the sun's disk (ShadowAlgorithm)");
+        }
         this.lockstepAllowed = lockstepAllowed;
         this.v = dem.backingArray();
         this.f = frame;
@@ -154,7 +158,7 @@ final class SunSweep {
         int kMin = wj0 - pf[wi1] - 1;
         int kMax = wj1 - pf[wi0];
         Window w = new Window(win, wi0, wi1, wj0, wj1, iTop, out);
-        boolean lockstep = lockstepAllowed && bilinear && !f.soft() && f.curvature == 0 && uniformStep == uniformStep;
+        boolean lockstep = lockstepAllowed && bilinear && f.curvature == 0 && uniformStep == uniformStep;
         List<RecursiveAction> tasks = new ArrayList<>();
         for (int k = kMin; k <= kMax; k += LINES_PER_TASK) {
             int from = k;
@@ -181,22 +185,18 @@ final class SunSweep {
     private record Window(CellWindow win, int wi0, int wi1, int wj0, int wj1, int iTop, float[] out) {
     }
 
-    /** Per-task scratch: the shadow height and occluder distance of one line at each window column. */
+    /** Per-task scratch: the shadow height of one line at each window column. */
     private final class Line {
         final double[] height;
-        final double[] occluder;
         final double[] pos;
         final double[] hullA;
         final double[] hullB;
-        final double[] hullP;
 
         Line(int windowCols, int walkLen) {
             height = new double[windowCols];
-            occluder = new double[windowCols];
             pos = new double[walkLen + 3];
             hullA = new double[walkLen + 3];
             hullB = new double[walkLen + 3];
-            hullP = new double[walkLen + 3];
         }
     }
 
@@ -284,7 +284,7 @@ final class SunSweep {
         if (iHi < wi1) {
             java.util.Arrays.fill(line.height, iHi + 1 - wi0, wi1 + 1 - wi0, Double.NEGATIVE_INFINITY);
         }
-        if (bc == 0 && uniformStep == uniformStep && !f.soft()) {
+        if (bc == 0 && uniformStep == uniformStep) {
             walkUniform(k, iLo, iHi, wi0, wi1, line.height);
             return;
         }
@@ -304,12 +304,10 @@ final class SunSweep {
             pos[iHi - wi0] = top;
         }
         double best = Double.NEGATIVE_INFINITY;   // max of z + tan·P (no curvature)
-        double bestP = 0;
         int hullHead = 0;
         int hullSize = 0;
         double[] ha = line.hullA;
         double[] hb = line.hullB;
-        double[] hp = line.hullP;
         for (int i = iHi; i >= iLo; i--) {
             if (i < iHi) {
                 if (uniform) {
@@ -327,7 +325,6 @@ final class SunSweep {
                         double val = z + tan * pz;
                         if (val > best) {
                             best = val;
-                            bestP = pz;
                         }
                     } else {
                         // line of the upper envelope: value(P) = A + B·P − tan·P − bc·P², slopes B increasing
@@ -348,12 +345,10 @@ final class SunSweep {
                         if (hullSize > hullHead && nb == hb[hullSize - 1]) {
                             if (na > ha[hullSize - 1]) {
                                 ha[hullSize - 1] = na;
-                                hp[hullSize - 1] = pz;
                             }
                         } else {
                             ha[hullSize] = na;
                             hb[hullSize] = nb;
-                            hp[hullSize] = pz;
                             hullSize++;
                         }
                     }
@@ -363,14 +358,12 @@ final class SunSweep {
                 int at = i - wi0;
                 if (bc == 0) {
                     line.height[at] = best - tan * p;
-                    line.occluder[at] = p - bestP;
                 } else if (hullSize > hullHead) {
                     while (hullSize - hullHead >= 2
                             && ha[hullHead + 1] + hb[hullHead + 1] * p >= ha[hullHead] + hb[hullHead] * p) {
                         hullHead++;
                     }
                     line.height[at] = ha[hullHead] + hb[hullHead] * p - tan * p - bc * p * p;
-                    line.occluder[at] = p - hp[hullHead];
                 } else {
                     line.height[at] = Double.NEGATIVE_INFINITY;
                 }
@@ -551,8 +544,6 @@ final class SunSweep {
 
     /** Evaluates the cells between lines k and k + 1. */
     private void band(Window w, int k, Line a, Line b) {
-        double tan = f.tanElevation;
-        boolean soft = f.soft();
         int iLo = w.wi0;
         int iHi = w.wi1;
         if (m > 0) {
@@ -578,26 +569,14 @@ final class SunSweep {
                 double hb = b.height[at];
                 double floor = z0 - relief;
                 double s;
-                double occ;
                 if (phi == 0 || !(hb >= floor)) {
                     s = ha;
-                    occ = a.occluder[at];
                 } else if (!(ha >= floor)) {
                     s = hb;
-                    occ = b.occluder[at];
                 } else {
                     s = ha + (hb - ha) * phi;
-                    occ = a.occluder[at] + (b.occluder[at] - a.occluder[at]) * phi;
                 }
-                if (!soft) {
-                    result = (s > z0 || localBlocked(i, j, z0)) ? 1f : 0f;
-                } else {
-                    double slope = s == Double.NEGATIVE_INFINITY ? Double.NEGATIVE_INFINITY
-                            : tan + (s - z0) / occ;
-                    slope = Math.max(slope, localMaxSlope(i, j, z0));
-                    result = (float) SunDisk.hiddenFraction(f.elevationDeg, Math.toDegrees(Math.atan(slope)),
-                            f.sunRadiusDeg);
-                }
+                result = (s > z0 || localBlocked(i, j, z0)) ? 1f : 0f;
             }
             int col = c0 + ci * i + cj * j;
             int row = r0 + ri * i + rj * j;
@@ -663,24 +642,5 @@ final class SunSweep {
             }
         }
         return false;
-    }
-
-    /** Highest slope (z − z0)/d seen within the first major step of the ray from (i, j); −∞ when none. */
-    private double localMaxSlope(int i, int j, double z0) {
-        double d = f.metresPerStep[rowOf(i, j)];
-        double bc = f.curvature;
-        double best = Double.NEGATIVE_INFINITY;
-        for (int q = firstSample(); q <= SUB_STEPS; q++) {
-            double t = (double) q / SUB_STEPS;
-            if (i + t > nMaj - 0.5 || j + m * t > nMin - 0.5) {
-                break;
-            }
-            double z = frameSample(i, j, t);
-            double dist = t * d;
-            if (z == z) {
-                best = Math.max(best, (z - bc * dist * dist - z0) / dist);
-            }
-        }
-        return best;
     }
 }
