@@ -14,8 +14,8 @@ import java.util.concurrent.ForkJoinPool;
 
 /**
  * Renders a {@link Scene} of a {@link Dem} (or of a rectangle of it, the rest serving as halo) into ARGB pixels, one
- * pixel per DEM cell: cast shadows first (parallel inside the shadow algorithm), then tint, illumination and composition tile by tile on a
- * {@link ForkJoinPool}. The result is identical for any thread count and tile size.
+ * pixel per DEM cell: cast shadows first (parallel inside the shadow algorithm), then tint, illumination and
+ * composition tile by tile on a {@link ForkJoinPool}. The result is identical for any thread count and tile size.
  *
  * <p>To render at a smaller size, resample the DEM first ({@link io.github.jdem846.raster.DemResampler}, or a
  * decimated read): stages then run at the output resolution. Interrupting the calling thread stops the work
@@ -112,22 +112,13 @@ public final class Renderer {
     /** The illumination of the cells of {@code area} only (row length {@code area.width()}). */
     public float[] illumination(Dem dem, IlluminationStage stage, LightField light, CellWindow area,
                                 RenderProgress progress) throws InterruptedException {
-        requireInside(area, dem);
         int width = area.width();
         float[] out = new float[width * area.height()];
-        ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
-        try {
-            new TileExecutor(pool, settings.tileSize()).forEachTile(width, area.height(), "hillshade", progress,
-                    (c0, r0, w, h) -> {
-                        float[] tile = new float[w * h];
-                        illuminate(dem, stage, light, area.col() + c0, area.row() + r0, w, h, tile);
-                        for (int r = 0; r < h; r++) {
-                            System.arraycopy(tile, r * w, out, (r0 + r) * width + c0, w);
-                        }
-                    });
-        } finally {
-            pool.shutdownNow();
-        }
+        illuminateTiles(dem, stage, light, area, progress, (c0, r0, w, h, tile) -> {
+            for (int r = 0; r < h; r++) {
+                System.arraycopy(tile, r * w, out, (r0 + r) * width + c0, w);
+            }
+        });
         return out;
     }
 
@@ -146,27 +137,40 @@ public final class Renderer {
                                 CellWindow area, RenderProgress progress) throws InterruptedException {
         Objects.requireNonNull(method, "method");
         Objects.requireNonNull(options, "options");
-        requireInside(area, dem);
-        IlluminationStage stage = method.stage(options);
         int width = area.width();
         byte[] out = new byte[width * area.height()];
+        illuminateTiles(dem, method.stage(options), light, area, progress, (c0, r0, w, h, tile) -> {
+            for (int r = 0; r < h; r++) {
+                int o = (r0 + r) * width + c0;
+                for (int c = 0; c < w; c++) {
+                    out[o + c] = (byte) method.gray(tile[r * w + c], options);
+                }
+            }
+        });
+        return out;
+    }
+
+    /** Receives the illumination of one tile ({@code w × h}, at ({@code c0}, {@code r0}) of the area). */
+    @FunctionalInterface
+    private interface IlluminatedTile {
+        void accept(int c0, int r0, int w, int h, float[] tile);
+    }
+
+    /** Computes the illumination of {@code area} tile by tile on a pool of its own, handing each tile over. */
+    private void illuminateTiles(Dem dem, IlluminationStage stage, LightField light, CellWindow area,
+                                 RenderProgress progress, IlluminatedTile sink) throws InterruptedException {
+        requireInside(area, dem);
         ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
         try {
-            new TileExecutor(pool, settings.tileSize()).forEachTile(width, area.height(), "hillshade", progress,
-                    (c0, r0, w, h) -> {
+            new TileExecutor(pool, settings.tileSize()).forEachTile(area.width(), area.height(), "hillshade",
+                    progress, (c0, r0, w, h) -> {
                         float[] tile = new float[w * h];
                         illuminate(dem, stage, light, area.col() + c0, area.row() + r0, w, h, tile);
-                        for (int r = 0; r < h; r++) {
-                            int o = (r0 + r) * width + c0;
-                            for (int c = 0; c < w; c++) {
-                                out[o + c] = (byte) method.gray(tile[r * w + c], options);
-                            }
-                        }
+                        sink.accept(c0, r0, w, h, tile);
                     });
         } finally {
             pool.shutdownNow();
         }
-        return out;
     }
 
     /**

@@ -497,16 +497,7 @@ final class SunSweep {
                 } else {
                     double ha = h[q];
                     double hb = h[q + 1];
-                    double floor = z0 - relief;
-                    double s;
-                    if (phi == 0 || !(hb >= floor)) {
-                        s = ha;
-                    } else if (!(ha >= floor)) {
-                        s = hb;
-                    } else {
-                        s = ha + (hb - ha) * phi;
-                    }
-                    boolean shadow = s > z0;
+                    boolean shadow = between(ha, hb, phi, z0 - relief) > z0;
                     if (!shadow) {
                         if (inner && j + 1 < nMin) {
                             int u = up + sj * j;
@@ -567,21 +558,27 @@ final class SunSweep {
             } else {
                 double ha = a.height[at];
                 double hb = b.height[at];
-                double floor = z0 - relief;
-                double s;
-                if (phi == 0 || !(hb >= floor)) {
-                    s = ha;
-                } else if (!(ha >= floor)) {
-                    s = hb;
-                } else {
-                    s = ha + (hb - ha) * phi;
-                }
-                result = (s > z0 || localBlocked(i, j, z0)) ? 1f : 0f;
+                result = (between(ha, hb, phi, z0 - relief) > z0 || localBlocked(i, j, z0)) ? 1f : 0f;
             }
             int col = c0 + ci * i + cj * j;
             int row = r0 + ri * i + rj * j;
             w.out[(row - w.win.row()) * w.win.width() + (col - w.win.col())] = result;
         }
+    }
+
+    /**
+     * A cell's shadow height between its two lines, {@code phi} of the way from line a to line b. A line below
+     * {@code floor} (z0 − relief) counts as having no terrain, so the other line's height is taken whole: the same
+     * answer whether or not a window's halo reaches that line's distant samples.
+     */
+    private static double between(double ha, double hb, double phi, double floor) {
+        if (phi == 0 || !(hb >= floor)) {
+            return ha;
+        }
+        if (!(ha >= floor)) {
+            return hb;
+        }
+        return ha + (hb - ha) * phi;
     }
 
     /** Terrain at fractional frame position (i + t, j + m·t), or NaN off the grid or no-data. */
