@@ -58,7 +58,6 @@ public final class JDem846Illumination implements IlluminationStage {
         final float[] v = dem.backingArray();
         final int width = dem.width();
         final int height = dem.height();
-        final double[] normal = new double[3];
         for (int r = row0; r < row0 + h; r++) {
             final double dx = spacing.eastWest(r);
             final double dy = spacing.northSouth(r);
@@ -80,8 +79,7 @@ public final class JDem846Illumination implements IlluminationStage {
                 final double wFilled = !Double.isNaN(wv) ? wv : !Double.isNaN(e) ? -e : 0.0;
                 final double nFilled = !Double.isNaN(n) ? n : !Double.isNaN(s) ? -s : 0.0;
                 final double sFilled = !Double.isNaN(s) ? s : !Double.isNaN(n) ? -n : 0.0;
-                vertexNormal(dx, dy, eFilled * k, wFilled * k, nFilled * k, sFilled * k, normal);
-                double d = normal[0] * le + normal[1] * ln + normal[2] * lu; // eq. 7
+                double d = cosineOfIncidence(dx, dy, eFilled * k, wFilled * k, nFilled * k, sFilled * k, le, ln, lu);
                 if (belowHorizon && d > 0) {
                     d = 0.0;
                 }
@@ -94,46 +92,47 @@ public final class JDem846Illumination implements IlluminationStage {
      * The unit vertex normal of a cell from its four neighbours (eq. 5, 6 and the normalisation of eq. 7): C at the
      * origin, E = (dx, 0, zE), W = (−dx, 0, zW), N = (0, dy, zN), S = (0, −dy, zS). Writes (east, north, up) into
      * {@code normal}.
+     *
+     * <p>With C at the origin the cross products of eq. 12 have closed forms, each triangle's normal being
+     * (dy·a, dx·b, dx·dy) with a ∈ {zW, −zE} and b ∈ {−zN, zS}:
+     * (W, C, N) → (dy·zW, −dx·zN, dx·dy), (W, S, C) → (dy·zW, dx·zS, dx·dy), (C, S, E) → (−dy·zE, dx·zS, dx·dy),
+     * (N, C, E) → (−dy·zE, −dx·zN, dx·dy). Written out, the kernel needs five square roots and five divisions per
+     * cell instead of the generic cross products' many multiplications by zero (which IEEE arithmetic forbids the
+     * compiler to drop).
      */
     static void vertexNormal(double dx, double dy, double zE, double zW, double zN, double zS, double[] normal) {
-        normal[0] = 0;
-        normal[1] = 0;
-        normal[2] = 0;
-        // The four triangles around C, each counter-clockwise seen from above so that its normal points up.
-        addTriangleNormal(-dx, 0, zW, 0, 0, 0, 0, dy, zN, normal);   // (W, C, N)
-        addTriangleNormal(-dx, 0, zW, 0, -dy, zS, 0, 0, 0, normal);  // (W, S, C)
-        addTriangleNormal(0, 0, 0, 0, -dy, zS, dx, 0, zE, normal);   // (C, S, E)
-        addTriangleNormal(0, dy, zN, 0, 0, 0, dx, 0, zE, normal);    // (N, C, E)
-        // eq. 6 divides the sum by 4; the direction is the same, and eq. 7 normalises it.
-        double len = Math.sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-        if (len > 0) {
-            normal[0] /= len;
-            normal[1] /= len;
-            normal[2] /= len;
-        } else {
-            normal[0] = 0;
-            normal[1] = 0;
-            normal[2] = 1; // no extent, no relief: flat
-        }
+        normal[0] = cosineOfIncidence(dx, dy, zE, zW, zN, zS, 1, 0, 0);
+        normal[1] = cosineOfIncidence(dx, dy, zE, zW, zN, zS, 0, 1, 0);
+        normal[2] = cosineOfIncidence(dx, dy, zE, zW, zN, zS, 0, 0, 1);
     }
 
-    /** Adds the unit normal of triangle (P0, P1, P2) to {@code acc} (eq. 5 / 15 with eq. 12, 14 and 16). */
-    private static void addTriangleNormal(double x0, double y0, double z0, double x1, double y1, double z1,
-                                          double x2, double y2, double z2, double[] acc) {
-        double ax = x0 - x1;
-        double ay = y0 - y1;
-        double az = z0 - z1;
-        double bx = x1 - x2;
-        double by = y1 - y2;
-        double bz = z1 - z2;
-        double cx = ay * bz - by * az; // eq. 12
-        double cy = az * bx - bz * ax;
-        double cz = ax * by - bx * ay;
-        double len = Math.sqrt(cx * cx + cy * cy + cz * cz); // eq. 14: L = 0 → 1
-        if (len > 0) {
-            acc[0] += cx / len; // eq. 16
-            acc[1] += cy / len;
-            acc[2] += cz / len;
-        }
+    /**
+     * Eq. 7: the dot product of the unit vertex normal ({@link #vertexNormal}) with the unit light vector
+     * (east, north, up).
+     */
+    private static double cosineOfIncidence(double dx, double dy, double zE, double zW, double zN, double zS,
+                                            double le, double ln, double lu) {
+        final double aW = dy * zW;
+        final double aE = -dy * zE;
+        final double bN = -dx * zN;
+        final double bS = dx * zS;
+        final double c = dx * dy;
+        final double cc = c * c;
+        // eq. 14–16: each triangle's normal divided by its length (a zero normal stays zero).
+        final double iWN = inverseLength(aW * aW + bN * bN + cc);
+        final double iWS = inverseLength(aW * aW + bS * bS + cc);
+        final double iES = inverseLength(aE * aE + bS * bS + cc);
+        final double iEN = inverseLength(aE * aE + bN * bN + cc);
+        // eq. 6: their sum (the mean's direction), then eq. 7 with the sum normalised.
+        final double x = aW * (iWN + iWS) + aE * (iES + iEN);
+        final double y = bN * (iWN + iEN) + bS * (iWS + iES);
+        final double z = c * (iWN + iWS + iES + iEN);
+        final double len = Math.sqrt(x * x + y * y + z * z);
+        return len > 0 ? (x * le + y * ln + z * lu) / len : lu; // a zero mean: no extent, no relief, flat
+    }
+
+    /** 1/√{@code squaredLength}, or 0 for a zero vector (eq. 14's L = 0 case adds nothing). */
+    private static double inverseLength(double squaredLength) {
+        return squaredLength > 0 ? 1.0 / Math.sqrt(squaredLength) : 0.0;
     }
 }
