@@ -25,18 +25,39 @@ public final class Brightness {
 
     /**
      * Eq. 8 on each channel of a non-premultiplied ARGB colour (alpha kept), rounding to the nearest 8-bit value as
-     * the original did ({@code Math.round(c·255)}).
+     * the original did ({@code Math.round(c·255)}). The same value as {@link #adjustBrightness(double, double)} on
+     * each channel {@code c/255}, with the clamp and the branch taken once per pixel.
      */
     public static int adjustBrightness(int argb, double d) {
+        double t = Math.max(-1.0, Math.min(1.0, d));
         int a = argb >>> 24;
-        int r = adjustChannel((argb >> 16) & 0xFF, d);
-        int g = adjustChannel((argb >> 8) & 0xFF, d);
-        int b = adjustChannel(argb & 0xFF, d);
+        int r = (argb >> 16) & 0xFF;
+        int g = (argb >> 8) & 0xFF;
+        int b = argb & 0xFF;
+        if (t < 0) {
+            double f = 1 + t;
+            r = toByte(UNIT[r] * f);
+            g = toByte(UNIT[g] * f);
+            b = toByte(UNIT[b] * f);
+        } else {
+            r = toByte(UNIT[r] + (1 - UNIT[r]) * t);
+            g = toByte(UNIT[g] + (1 - UNIT[g]) * t);
+            b = toByte(UNIT[b] + (1 - UNIT[b]) * t);
+        }
         return (a << 24) | (r << 16) | (g << 8) | b;
     }
 
-    private static int adjustChannel(int c255, double d) {
-        return (int) Math.round(adjustBrightness(c255 / 255.0, d) * 255.0);
+    /** {@code UNIT[c] = c / 255.0}, the 8-bit channel values in [0, 1] (a lookup instead of a division). */
+    private static final double[] UNIT = new double[256];
+
+    static {
+        for (int c = 0; c < 256; c++) {
+            UNIT[c] = c / 255.0;
+        }
+    }
+
+    private static int toByte(double c) {
+        return (int) Math.round(Math.max(0.0, Math.min(1.0, c)) * 255.0);
     }
 
     /**

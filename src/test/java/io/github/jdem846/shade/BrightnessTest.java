@@ -39,6 +39,24 @@ class BrightnessTest {
     }
 
     @Test
+    void eq8OnArgbEqualsEq8OnEachChannel() {
+        // The packed-pixel version is the per-channel formula on c/255, rounded with Math.round, for every 8-bit
+        // channel value and d across and beyond [−1, 1] (including the clamps and d = ±0).
+        java.util.Random rnd = new java.util.Random(846);
+        for (int c = 0; c < 256; c++) {
+            for (int k = -60; k <= 60; k++) {
+                double d = k == 0 ? -0.0 : k / 50.0 + (rnd.nextDouble() - 0.5) * 1e-3;
+                int argb = 0x80000000 | (c << 16) | ((255 - c) << 8) | (c * 7 & 0xFF);
+                int expected = 0x80000000
+                        | (int) Math.round(Brightness.adjustBrightness(c / 255.0, d) * 255.0) << 16
+                        | (int) Math.round(Brightness.adjustBrightness((255 - c) / 255.0, d) * 255.0) << 8
+                        | (int) Math.round(Brightness.adjustBrightness((c * 7 & 0xFF) / 255.0, d) * 255.0);
+                assertEquals(expected, Brightness.adjustBrightness(argb, d), "c " + c + ", d " + d);
+            }
+        }
+    }
+
+    @Test
     void intensityStepScalesLightAndDarkSeparately() {
         assertEquals(0.6, Brightness.intensity(0.8, 0.75, 1.0), 1e-15);
         assertEquals(-0.8, Brightness.intensity(-0.8, 0.75, 1.0), 1e-15);
