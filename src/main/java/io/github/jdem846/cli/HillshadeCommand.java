@@ -1,6 +1,10 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.light.LightField;
 import io.github.jdem846.render.DemLoader;
+import io.github.jdem846.render.RenderProgress;
+import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Renderer;
 import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shade.HillshadeOptions;
@@ -56,7 +60,10 @@ public final class HillshadeCommand implements Callable<Integer> {
         PhaseTimes times = new PhaseTimes();
         HillshadeMethod m = multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : HillshadeMethod.fromName(method);
         HillshadeOptions options = shading.options();
+        KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).hillshadeGray(dem, m,
+                options, LightField.uniform(new LightDirection(315, 45)), RenderProgress.NONE));
         DemLoader.Loaded loaded = input.load(DemLoader.Halo.uniform(1), false);
+        warmUp.stop();
         times.lap("read");
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);

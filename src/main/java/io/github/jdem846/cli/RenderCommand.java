@@ -1,7 +1,9 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.render.DemLoader;
 import io.github.jdem846.render.RenderedImage;
+import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Renderer;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.HillshadeMethod;
@@ -80,7 +82,11 @@ public final class RenderCommand implements Callable<Integer> {
             halo = halo.union(CommandSupport.shadowHalo(sun, input.body(), scene.hillshadeOptions().zFactor(),
                     scene.shadowOptions(), err));
         }
+        Scene warmUpScene = scene.withLight(new LightDirection(320, 25));
+        KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem,
+                warmUpScene));
         DemLoader.Loaded loaded = input.load(halo, scene.tint() != null);
+        warmUp.stop();
         times.lap("read");
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);

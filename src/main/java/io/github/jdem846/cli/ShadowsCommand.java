@@ -1,6 +1,9 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.render.DemLoader;
+import io.github.jdem846.render.RenderProgress;
+import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Renderer;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shadow.ShadowAlgorithm;
@@ -56,8 +59,12 @@ public final class ShadowsCommand implements Callable<Integer> {
         }
         Scene scene = Scene.defaults().withTint(null).withHillshade(null).withShadows(alg)
                 .withShadowOptions(shadowOptions.options());
+        Scene warmUpScene = scene.withLight(new LightDirection(300, 10));
+        KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).shadows(dem,
+                warmUpScene, RenderProgress.NONE));
         DemLoader.Loaded loaded = input.load(
                 CommandSupport.shadowHalo(sun, input.body(), 1, scene.shadowOptions(), err), false);
+        warmUp.stop();
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
         float[] mask;

@@ -3,6 +3,7 @@ package io.github.jdem846.cli;
 import io.github.jdem846.render.DemLoader;
 import io.github.jdem846.render.RenderProgress;
 import io.github.jdem846.render.RenderedImage;
+import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Renderer;
 import io.github.jdem846.render.Scene;
 import java.io.PrintWriter;
@@ -45,7 +46,9 @@ public final class TintCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         PhaseTimes times = new PhaseTimes();
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(null);
+        KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem, scene));
         DemLoader.Loaded loaded = input.load(DemLoader.Halo.NONE, scene.tint() != null);
+        warmUp.stop();
         times.lap("read");
         CommandSupport.printNotices(loaded, err);
         RenderedImage image = new Renderer(execution.settings()).render(loaded.dem(),
