@@ -181,10 +181,14 @@ final class GeoTiffSource implements RasterSource {
     private void readSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
         TiffSubset.Subset subset = TiffSubset.of(layout, col, row, width, rows);
         Raster raster;
+        DecodeTarget target;
         ImageReader r = new TIFFImageReaderSpi().createReaderInstance();
         try (ImageInputStream in = new SplicedImageInputStream(subset.head(), subset.shift(), channel)) {
             r.setInput(in, true, true);
-            raster = r.readRaster(0, null);
+            target = DecodeTarget.forRawType(r.getRawImageType(0), subset.width(), subset.height());
+            ImageReadParam param = r.getDefaultReadParam();
+            param.setDestination(target); // null: the decoder's own image
+            raster = r.readRaster(0, param);
         } catch (IOException | RuntimeException e) {
             throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
                     + " (truncated or corrupt TIFF?): " + describe(e), e);
@@ -195,7 +199,12 @@ final class GeoTiffSource implements RasterSource {
             throw new DemFormatException(file, "the TIFF decoder returned " + raster.getWidth() + "×"
                     + raster.getHeight() + " cells for " + subset.width() + "×" + subset.height());
         }
-        copyBand0(raster, col - subset.x0(), row - subset.y0(), width, rows, dst);
+        if (target != null && raster == target.getRaster()) {
+            copyCells(target.array(), raster.getDataBuffer().getDataType(), subset.width(), col - subset.x0(),
+                    row - subset.y0(), width, rows, dst);
+        } else {
+            copyBand0(raster, col - subset.x0(), row - subset.y0(), width, rows, dst);
+        }
     }
 
     /**
@@ -263,6 +272,43 @@ final class GeoTiffSource implements RasterSource {
             for (int r = 0; r < rows; r++) {
                 raster.getSamples(x0, y0 + r, width, 1, 0, row);
                 System.arraycopy(row, 0, dst, r * width, width);
+            }
+        }
+    }
+
+    /**
+     * Like {@link #copyBand0}, from the cells of a {@link DecodeTarget} ({@code stride} per row, of a DataBuffer
+     * type) with the same conversions as the JDK's sample getters there: bytes and unsigned shorts unsigned,
+     * shorts signed, then the sample type's reinterpretation of ints and bytes.
+     */
+    private void copyCells(Object cells, int dataType, int stride, int skipX, int skipY, int width, int rows,
+                           float[] dst) {
+        SampleType type = info.dataType();
+        for (int r = 0; r < rows; r++) {
+            int from = (skipY + r) * stride + skipX;
+            int to = r * width;
+            if (cells instanceof float[] a) {
+                System.arraycopy(a, from, dst, to, width);
+            } else if (cells instanceof short[] a) {
+                boolean unsigned = dataType == DataBuffer.TYPE_USHORT;
+                for (int c = 0; c < width; c++) {
+                    dst[to + c] = unsigned ? a[from + c] & 0xFFFF : a[from + c];
+                }
+            } else if (cells instanceof int[] a) {
+                boolean unsigned = type == SampleType.UINT32;
+                for (int c = 0; c < width; c++) {
+                    dst[to + c] = unsigned ? a[from + c] & 0xFFFFFFFFL : a[from + c];
+                }
+            } else if (cells instanceof byte[] a) {
+                boolean signed = type == SampleType.INT8;
+                for (int c = 0; c < width; c++) {
+                    dst[to + c] = signed ? a[from + c] : a[from + c] & 0xFF;
+                }
+            } else {
+                double[] a = (double[]) cells;
+                for (int c = 0; c < width; c++) {
+                    dst[to + c] = (float) a[from + c];
+                }
             }
         }
     }
