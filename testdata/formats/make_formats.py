@@ -63,6 +63,8 @@ write_like(VOLCANO, "volcano_rotated.tif", [v.astype(np.int16)], gdal.GDT_Int16,
 
 # PixelIsPoint: the same grid, georeferenced on cell centres.
 translate(VOLCANO, "volcano_pixelispoint.tif", "-mo", "AREA_OR_POINT=Point")
+translate(VOLCANO, "volcano_int16_decimetres_scale0.1_offset50_nodata440.tif", "-ot", "Int16", "-scale", "94", "195",
+          "440", "1450", "-a_scale", "0.1", "-a_offset", "50", "-a_nodata", "440")
 
 # US survey feet: EPSG:2227 (not in Apache SIS's offline EPSG subset) and a user-defined TM in feet.
 translate(VOLCANO, "volcano_epsg2227_ftus.tif", "-a_srs", "EPSG:2227")

@@ -5,9 +5,10 @@ import java.io.IOException;
 
 /**
  * Reads a window of a {@link RasterSource} band by band and hands over output rows, applying the no-data rule
- * (declared value → NaN) and, for decimation {@code d > 1}, the box filter: each output cell is the mean of the
- * valid cells of its {@code d × d} block (partial at the east and south edges), NaN when none is valid. Only one
- * band of rows is held at a time, so the memory used is independent of the height of the window.
+ * (declared value → NaN), then the file's {@link ValueScale}, and, for decimation {@code d > 1}, the box filter:
+ * each output cell is the mean of the valid cells of its {@code d × d} block (partial at the east and south edges),
+ * NaN when none is valid. Only one band of rows is held at a time, so the memory used is independent of the height
+ * of the window.
  */
 final class BlockReader {
 
@@ -49,6 +50,7 @@ final class BlockReader {
         int[] count = d > 1 ? new int[outW] : null;
         float nd = NoData.toFloat32(noData);
         boolean hasNoData = !Double.isNaN(noData);
+        ValueScale scale = source.valueScale();
         int outRow = 0;
         for (int r0 = 0; r0 < h; r0 += bandRows) {
             int n = Math.min(bandRows, h - r0);
@@ -59,6 +61,9 @@ final class BlockReader {
                         band[i] = Float.NaN;
                     }
                 }
+            }
+            if (!scale.isIdentity()) {
+                scale.apply(band, n * w);
             }
             if (d == 1) {
                 for (int r = 0; r < n; r++) {

@@ -46,9 +46,10 @@ final class GeoTiffSource implements RasterSource {
     private final boolean tiled;
     private final TiffSubset.Layout layout; // null: no subsetting, use source regions
     private final FileChannel channel;
+    private final ValueScale valueScale;
 
     private GeoTiffSource(Path file, ImageInputStream stream, ImageReader reader, DemInfo info, int rowBlock,
-                          boolean tiled, TiffSubset.Layout layout, FileChannel channel) {
+                          boolean tiled, TiffSubset.Layout layout, FileChannel channel, ValueScale valueScale) {
         this.file = file;
         this.stream = stream;
         this.reader = reader;
@@ -57,6 +58,7 @@ final class GeoTiffSource implements RasterSource {
         this.tiled = tiled;
         this.layout = layout;
         this.channel = channel;
+        this.valueScale = valueScale;
     }
 
     static RasterSource open(Path tif) throws IOException {
@@ -83,13 +85,14 @@ final class GeoTiffSource implements RasterSource {
             checkNotTruncated(tif, fields);
             GridGeometry geometry = geometry(tif, fields, width, height, notices);
             Double noData = noData(fields, notices);
+            ValueScale valueScale = ValueScale.fromGdalMetadata(fields.ascii(TiffFields.GDAL_METADATA), notices);
             boolean tiled = fields.has(TiffFields.TILE_OFFSETS);
             int rowBlock = tiled ? fields.intValue(TiffFields.TILE_LENGTH, 1)
                     : Math.max(1, Math.min(height, fields.intValue(TiffFields.ROWS_PER_STRIP, height)));
             DemInfo info = new DemInfo(tif.toString(), DemFormat.GEOTIFF, type, bands, geometry, noData, notices);
             FileChannel channel = FileChannel.open(tif, StandardOpenOption.READ);
             TiffSubset.Layout layout = layoutOf(fields, width, height, tiled, rowBlock, byteOrder(channel));
-            return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled, layout, channel);
+            return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled, layout, channel, valueScale);
         } catch (DemFormatException e) {
             closeQuietly(reader, stream);
             throw e;
@@ -125,6 +128,11 @@ final class GeoTiffSource implements RasterSource {
     @Override
     public DemInfo info() {
         return info;
+    }
+
+    @Override
+    public ValueScale valueScale() {
+        return valueScale;
     }
 
     @Override

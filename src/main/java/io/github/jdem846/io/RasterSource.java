@@ -45,6 +45,11 @@ interface RasterSource extends Closeable {
         return false;
     }
 
+    /** How stored values unpack to elevations, after the no-data rule (identity for most files). */
+    default ValueScale valueScale() {
+        return ValueScale.IDENTITY;
+    }
+
     @Override
     void close() throws IOException;
 }

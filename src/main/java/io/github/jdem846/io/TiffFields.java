@@ -38,6 +38,7 @@ final class TiffFields {
     static final int GEO_KEY_DIRECTORY = 34735;
     static final int GEO_DOUBLE_PARAMS = 34736;
     static final int GEO_ASCII_PARAMS = 34737;
+    static final int GDAL_METADATA = 42112;
     static final int GDAL_NODATA = 42113;
 
     private final Map<Integer, List<String>> fields;

@@ -77,6 +77,41 @@ class OtherFormatsTest {
     }
 
     @Test
+    void gdalScaleAndOffsetUnpackDecimetresAfterTheRawNoDataRule() throws IOException {
+        // Stored as Int16 decimetres above 50 m (raw = (v − 50) × 10), GDAL scale 0.1 and offset 50, and raw 440
+        // (= the volcano's lowest value, 94 m) declared as no-data: those cells are missing, all others are v.
+        Path file = FORMATS.resolve("volcano_int16_decimetres_scale0.1_offset50_nodata440.tif");
+        LoadedDem loaded = DemReader.load(file, ReadRequest.FULL);
+        Dem expected = volcanoMapped(v -> v == 94 ? Double.NaN : v);
+        assertSameValues(expected, loaded.dem(), "unpacked");
+        assertEquals(51, loaded.dem().statistics().noDataCount());
+        assertEquals(95, loaded.dem().statistics().min());
+        assertTrue(loaded.info().notices().stream().anyMatch(n -> n.contains("raw × 0.1 + 50")),
+                loaded.info().notices().toString());
+        // The same through a window.
+        assertSameValues(expected.crop(7, 9, 30, 41), DemReader.read(file, ReadRequest.of(Window.cells(7, 9, 30,
+                41))), "window");
+    }
+
+    @Test
+    void gdalMetadataWithoutScaleOrWithUnusableValuesChangesNothing() {
+        java.util.List<String> notices = new java.util.ArrayList<>();
+        assertTrue(ValueScale.fromGdalMetadata(null, notices).isIdentity());
+        assertTrue(ValueScale.fromGdalMetadata("<GDALMetadata><Item name=\"AREA_OR_POINT\">Area</Item>"
+                + "</GDALMetadata>", notices).isIdentity());
+        assertTrue(notices.isEmpty(), notices.toString());
+        // Band 2's scale is not band 1's; a zero scale and an unparsable offset are ignored with notices.
+        assertTrue(ValueScale.fromGdalMetadata("<GDALMetadata><Item name=\"SCALE\" sample=\"1\" role=\"scale\">"
+                + "0.5</Item></GDALMetadata>", notices).isIdentity());
+        ValueScale s = ValueScale.fromGdalMetadata("<GDALMetadata><Item name=\"SCALE\" sample=\"0\" role=\"scale\">"
+                + "0</Item><Item name=\"OFFSET\" sample=\"0\" role=\"offset\">x</Item></GDALMetadata>", notices);
+        assertTrue(s.isIdentity());
+        assertEquals(2, notices.size(), notices.toString());
+        assertTrue(ValueScale.fromGdalMetadata("<not xml", notices).isIdentity());
+        assertEquals(3, notices.size(), notices.toString());
+    }
+
+    @Test
     void twoBandsGiveBandOneWithANotice() throws IOException {
         LoadedDem loaded = DemReader.load(FORMATS.resolve("volcano_2bands.tif"), ReadRequest.FULL);
         assertSameValues(TestDems.load(TestDems.VOLCANO), loaded.dem(), "band 1");
