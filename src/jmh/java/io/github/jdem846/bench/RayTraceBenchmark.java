@@ -5,6 +5,7 @@ import io.github.jdem846.raster.Dem;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowMask;
 import io.github.jdem846.shadow.ShadowOptions;
+import java.io.IOException;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
@@ -22,13 +23,15 @@ import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 
 /**
- * Cast shadows of the whole seeded fractal DEM ({@link FractalDem}, seed 846, 30 m cells), sun at azimuth 300°
- * (off the grid axes and diagonals), on a pool of one thread: the score is milliseconds per whole grid, so
- * score / cells is the cost of one ray ({@code march}, {@code exact}) or of one cell ({@code sweep}).
- * {@code exact} runs at 512² only.
+ * Cast shadows of a whole DEM, sun at azimuth 300° (off the grid axes and diagonals), on a pool of one thread: the
+ * score is milliseconds per whole grid, so score / cells is the cost of one ray ({@code march}, {@code exact}) or of
+ * one cell ({@code sweep}). {@code exact} runs at 512² only. The DEM ({@code dem} parameter) is the seeded fractal
+ * ({@link FractalDem}, seed 846, 30 m cells; the default) or {@code mirrored}: Big Tujunga SRTM 30 m mirror-tiled
+ * ({@link MirroredDem}; real mountains, read from testdata, so run from the worktree root).
  *
  * <pre>./mvnw -B -o -q -Pjmh package -DskipTests
- * java -jar target/benchmarks.jar RayTraceBenchmark -f 1 -wi 2 -i 3</pre>
+ * java -jar target/benchmarks.jar RayTraceBenchmark -f 1 -wi 2 -i 3
+ * java -jar target/benchmarks.jar 'RayTraceBenchmark.(sweep|march)' -p dem=mirrored -p size=2048 -p elevation=5</pre>
  */
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
@@ -40,22 +43,34 @@ public class RayTraceBenchmark {
     /** Sun azimuth of every run, degrees. */
     public static final double AZIMUTH = 300;
 
-    /** A fractal DEM of {@code size}², the sun and a one-thread pool. */
+    /** The DEM {@code name} ({@code fractal} or {@code mirrored}) at {@code size}². */
+    static Dem dem(String name, int size) throws IOException {
+        return switch (name) {
+            case "fractal" -> FractalDem.dem(size, 846L);
+            case "mirrored" -> MirroredDem.bigTujunga(size);
+            default -> throw new IllegalArgumentException("dem must be fractal or mirrored, not '" + name + "'");
+        };
+    }
+
+    /** A DEM of {@code size}², the sun and a one-thread pool. */
     @State(Scope.Benchmark)
     public static class Grid {
+        @Param({"fractal"})
+        public String dem;
+
         @Param({"512", "2048"})
         public int size;
 
         @Param({"2", "5", "20", "45"})
         public double elevation;
 
-        Dem dem;
+        Dem grid;
         LightDirection light;
         ForkJoinPool pool;
 
         @Setup(Level.Trial)
-        public void setUp() {
-            dem = FractalDem.dem(size, 846L);
+        public void setUp() throws IOException {
+            grid = dem(dem, size);
             light = new LightDirection(AZIMUTH, elevation);
             pool = new ForkJoinPool(1);
         }
@@ -69,16 +84,19 @@ public class RayTraceBenchmark {
     /** {@link Grid} at 512² only, for the slow reference. */
     @State(Scope.Benchmark)
     public static class SmallGrid {
+        @Param({"fractal"})
+        public String dem;
+
         @Param({"2", "5", "20", "45"})
         public double elevation;
 
-        Dem dem;
+        Dem grid;
         LightDirection light;
         ForkJoinPool pool;
 
         @Setup(Level.Trial)
-        public void setUp() {
-            dem = FractalDem.dem(512, 846L);
+        public void setUp() throws IOException {
+            grid = dem(dem, 512);
             light = new LightDirection(AZIMUTH, elevation);
             pool = new ForkJoinPool(1);
         }
@@ -92,18 +110,18 @@ public class RayTraceBenchmark {
     /** The article's march: its step (eq. 9) and nearest-cell sampling. */
     @Benchmark
     public ShadowMask march(Grid g) {
-        return ShadowAlgorithm.MARCH.compute(g.dem, g.light, ShadowOptions.DEFAULTS, g.pool);
+        return ShadowAlgorithm.MARCH.compute(g.grid, g.light, ShadowOptions.DEFAULTS, g.pool);
     }
 
     /** The O(cells) sweep, bilinear, with the first-cell test (the defaults). */
     @Benchmark
     public ShadowMask sweep(Grid g) {
-        return ShadowAlgorithm.SWEEP.compute(g.dem, g.light, ShadowOptions.DEFAULTS, g.pool);
+        return ShadowAlgorithm.SWEEP.compute(g.grid, g.light, ShadowOptions.DEFAULTS, g.pool);
     }
 
     /** The reference: eighth-cell steps on the bilinear surface. */
     @Benchmark
     public ShadowMask exact(SmallGrid g) {
-        return ShadowAlgorithm.EXACT.compute(g.dem, g.light, ShadowOptions.DEFAULTS, g.pool);
+        return ShadowAlgorithm.EXACT.compute(g.grid, g.light, ShadowOptions.DEFAULTS, g.pool);
     }
 }
