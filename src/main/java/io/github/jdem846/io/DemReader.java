@@ -67,14 +67,19 @@ public final class DemReader {
             int d = request.decimation();
             int outW = BlockReader.outputSize(cells.width(), d);
             int outH = BlockReader.outputSize(cells.height(), d);
-            MemoryGuard.requireFits(file, outW, outH, BlockReader.bandBytes(source, cells, d), "read a window or a"
+            long bandBytes = BlockReader.bandBytes(source, cells, d);
+            MemoryGuard.requireFits(file, outW, outH, bandBytes, "read a window or a"
                     + " decimated version, or give Java more heap with -Xmx");
-            float[] values = new float[outW * outH];
             int unit = d * Math.max(1, source.naturalRowBlock()) / gcd(d, Math.max(1, source.naturalRowBlock()));
             long units = (cells.height() + unit - 1) / unit;
             long byCells = (long) cells.width() * cells.height() / Math.max(1, minCellsPerPart);
             int parts = source.readsRowsIndependently()
                     ? (int) Math.max(1, Math.min(Math.min(parallelism, units), byCells)) : 1;
+            // Each part holds a band buffer of its own: read with fewer parts rather than run out of heap.
+            while (parts > 1 && !MemoryGuard.fits(outW, outH, bandBytes * parts)) {
+                parts--;
+            }
+            float[] values = new float[outW * outH];
             if (parts == 1) {
                 readPart(source, cells, d, info.noDataOrNaN(), values, 0, outW);
             } else {

@@ -23,9 +23,8 @@ final class MemoryGuard {
             throws DemFormatException {
         long cells = (long) width * height;
         long bytes = cells * Float.BYTES;
-        Runtime rt = Runtime.getRuntime();
-        long max = rt.maxMemory();
-        long available = max - (rt.totalMemory() - rt.freeMemory());
+        long max = Runtime.getRuntime().maxMemory();
+        long available = available();
         if (cells > MAX_ARRAY) {
             throw new DemFormatException(file, "a " + width + " × " + height + " grid has " + cells
                     + " cells, more than one Java array can hold (" + MAX_ARRAY + "); it would need "
@@ -36,6 +35,18 @@ final class MemoryGuard {
                     + " as float32, but the Java heap allows at most " + human(max) + " (Runtime.maxMemory()), "
                     + human(Math.max(0, available)) + " of it free; " + advice);
         }
+    }
+
+    /** True when {@code width × height} float32 cells plus {@code workBytes} fit in the heap now available. */
+    static boolean fits(int width, int height, long workBytes) {
+        long cells = (long) width * height;
+        return cells <= MAX_ARRAY && cells * Float.BYTES + workBytes <= available();
+    }
+
+    /** Heap bytes not in use now (the maximum heap minus what is allocated and not free). */
+    private static long available() {
+        Runtime rt = Runtime.getRuntime();
+        return rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
     }
 
     /** Bytes in binary units, e.g. "37.3 GiB". */
