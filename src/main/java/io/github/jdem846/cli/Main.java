@@ -1,5 +1,8 @@
 package io.github.jdem846.cli;
 
+import java.util.List;
+import java.util.Map;
+import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -11,16 +14,7 @@ import picocli.CommandLine.Command;
         mixinStandardHelpOptions = true,
         versionProvider = VersionProvider.class,
         description = "Shaded relief from digital elevation models: hypsometric tint, hillshade and ray-traced "
-                + "cast shadows (a modern port of Kevin M. Gill's jDem846).",
-        subcommands = {
-            CommandLine.HelpCommand.class,
-            RenderCommand.class,
-            HillshadeCommand.class,
-            TintCommand.class,
-            ShadowsCommand.class,
-            InfoCommand.class,
-            SunCommand.class,
-        })
+                + "cast shadows (a modern port of Kevin M. Gill's jDem846).")
 public final class Main implements Runnable {
 
     @CommandLine.Spec
@@ -31,9 +25,37 @@ public final class Main implements Runnable {
         throw new CommandLine.ParameterException(spec.commandLine(), "Missing a subcommand, e.g. 'jdem846 render'.");
     }
 
-    /** Builds the configured command line (shared by {@link #main} and the tests). */
+    /** The subcommands, in the order {@code --help} lists them. */
+    private static final List<Map.Entry<String, Supplier<Object>>> SUBCOMMANDS = List.of(
+            Map.entry("help", CommandLine.HelpCommand::new),
+            Map.entry("render", RenderCommand::new),
+            Map.entry("hillshade", HillshadeCommand::new),
+            Map.entry("tint", TintCommand::new),
+            Map.entry("shadows", ShadowsCommand::new),
+            Map.entry("info", InfoCommand::new),
+            Map.entry("sun", SunCommand::new));
+
+    /** Builds the configured command line with every subcommand (for help and the tests). */
     public static CommandLine commandLine() {
+        return commandLine(new String[0]);
+    }
+
+    /**
+     * Builds the command line for these arguments. When they start with the name of a subcommand other than
+     * {@code help}, only that subcommand's model is built: picocli reads every command's options by reflection,
+     * which is a noticeable part of a one-shot command's start-up (docs/performance.md, "Start-up and class-data
+     * sharing"). Anything else (no arguments, an option, {@code help}, an unknown name) gets all of them, so help
+     * and error messages are unchanged.
+     */
+    public static CommandLine commandLine(String[] args) {
         CommandLine cl = new CommandLine(new Main());
+        String first = args.length > 0 ? args[0] : "";
+        boolean known = SUBCOMMANDS.stream().anyMatch(e -> e.getKey().equals(first) && !first.equals("help"));
+        for (Map.Entry<String, Supplier<Object>> e : SUBCOMMANDS) {
+            if (!known || e.getKey().equals(first)) {
+                cl.addSubcommand(e.getKey(), e.getValue().get());
+            }
+        }
         cl.setExecutionExceptionHandler(new CliExceptionHandler());
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         return cl;
@@ -44,7 +66,7 @@ public final class Main implements Runnable {
             quietLibraryLogs();
         }
         CrsWarmUp.start();
-        System.exit(commandLine().execute(args));
+        System.exit(commandLine(args).execute(args));
     }
 
     /**
