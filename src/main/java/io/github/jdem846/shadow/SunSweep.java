@@ -30,6 +30,8 @@ final class SunSweep {
 
     private static final int LINES_PER_TASK = 48;
     private static final int SUB_STEPS = 8;
+    /** Cells whose ray leaves through the file's side edge within this many major steps are traced directly. */
+    static int EDGE_TRACE_STEPS = 8;
 
     private final float[] v;
     private final RayFrame f;
@@ -54,6 +56,21 @@ final class SunSweep {
     private final double uniformStep;
     /** zMax − zMin of the whole DEM: a line whose shadow height is lower than z0 − relief counts as no terrain. */
     private final double relief;
+
+    /**
+     * The last minor cell the lines read, min(nMin − 1, the root grid's last one in this frame). Rays leave the grid
+     * through this side (j increases toward the sun): when it is the root's (the file's) edge, terrain ends half a
+     * cell beyond it, at the outer cell edge, where a marched ray leaves the grid; a side of a window that is not
+     * the file's edge keeps the one-cell clamp (terrain continues there in the file, and the halo bounds its effect).
+     */
+    private final int cellHi;
+    private final boolean exitIsRootEdge;
+    /**
+     * Cells j ≥ jTraced have rays that leave the grid through the root's exit side before {@link #EDGE_TRACE_STEPS}
+     * major steps: they are traced along their own ray up to the edge instead of from the lines' shadow heights,
+     * which carry terrain the cell's ray never reaches (up to a cell beyond its exit). Integer.MAX_VALUE = none.
+     */
+    private final int jTraced;
 
     /** When false, every case takes the line-by-line path ({@link #bands}): the reference of the tests. */
     private final boolean lockstepAllowed;
@@ -103,6 +120,17 @@ final class SunSweep {
         GridGeometry.Placement at = dem.geometry().placement();
         long i0 = frame.xMajor ? (ci > 0 ? at.col() : (long) at.rootWidth() - w - at.col())
                 : (ri > 0 ? at.row() : (long) at.rootHeight() - h - at.row());
+        // the root's last minor cell in this grid's frame: j = (cell − start) · direction, the larger of the ends
+        int rootFirst = frame.xMajor ? -at.row() : -at.col();
+        int rootLast = frame.xMajor ? at.rootHeight() - 1 - at.row() : at.rootWidth() - 1 - at.col();
+        int start = frame.xMajor ? r0 : c0;
+        int dir = frame.xMajor ? rj : cj;
+        int rootHi = Math.max((rootFirst - start) * dir, (rootLast - start) * dir);
+        exitIsRootEdge = rootHi <= nMin - 1;
+        cellHi = Math.min(nMin - 1, rootHi);
+        // d = cellHi − j: the ray leaves before step S when m·S > d + ½, i.e. d ≤ ceil(m·S − ½) − 1
+        int dTraced = (int) Math.ceil(m * EDGE_TRACE_STEPS - 0.5) - 1;
+        jTraced = exitIsRootEdge && dTraced >= 0 ? cellHi - dTraced : Integer.MAX_VALUE;
         double base = Math.floor(m * i0);
         pf = new int[nMaj];
         pr = new double[nMaj];
@@ -217,10 +245,19 @@ final class SunSweep {
 
     /** The terrain on line k at major index i (NaN = no-data or off the grid). */
     private double lineSample(int k, int i) {
-        int jj = k + pf[i];
-        double fr = pr[i];
+        return sampleAt(i, k + pf[i], pr[i]);
+    }
+
+    /**
+     * The terrain at major index i, minor position jj + fr (fr in [0, 1)), NaN = no-data or off the grid. The
+     * position is compared with the edges in that integer-and-fraction form, so a window decides exactly as the
+     * whole grid does. Bilinear: linear between cells jj and jj + 1; below the first cell the first one is read up
+     * to a cell beyond it (no ray leaves the grid there: the lines beyond are only interpolation partners of the
+     * first cells); beyond the last cell, up to the outer cell edge at the file's edge, else a cell beyond.
+     */
+    private double sampleAt(int i, int jj, double fr) {
         if (bilinear) {
-            if (jj >= 0 && jj < nMin - 1) {
+            if (jj >= 0 && jj < cellHi) {
                 int at = baseI[i] + strideJ * jj;
                 double za = v[at];
                 if (fr == 0) {
@@ -232,14 +269,14 @@ final class SunSweep {
                 }
                 return za == za ? za : zb;
             }
-            if (jj < -1 || jj > nMin - 1 || (jj == -1 && fr == 0)) {
+            if (jj < -1 || (jj == -1 && fr == 0) || jj > cellHi || (exitIsRootEdge && jj == cellHi && fr > 0.5)) {
                 return Double.NaN;
             }
             if (fr == 0) {
                 return v[idx(i, jj)];
             }
             int ja = Math.max(jj, 0);
-            int jb = Math.min(jj + 1, nMin - 1);
+            int jb = Math.min(jj + 1, cellHi);
             double za = v[idx(i, ja)];
             double zb = v[idx(i, jb)];
             if (za == za && zb == zb) {
@@ -248,12 +285,39 @@ final class SunSweep {
             return za == za ? za : zb;
         }
         double pos = jj + fr;
-        if (pos < -0.5 || pos > nMin - 0.5) {
+        if (pos < -0.5 || pos > cellHi + 0.5) {
             return Double.NaN;
         }
         int jn = (int) Math.floor(pos + 0.5);
-        jn = Math.max(0, Math.min(nMin - 1, jn));
+        jn = Math.max(0, Math.min(cellHi, jn));
         return v[idx(i, jn)];
+    }
+
+    /**
+     * For a cell j ≥ {@link #jTraced}: true when the terrain along its own ray, sampled as the lines are (at whole
+     * major steps 2, 3, … , linear across), is above the ray before the ray leaves the grid through the file's side
+     * edge (the article's test 2 applied to this cell's ray, not to its neighbouring lines). The first step is
+     * {@link #localBlocked}'s.
+     */
+    private boolean rayBlockedToEdge(int i, int j, double z0) {
+        double tan = f.tanElevation;
+        double bc = f.curvature;
+        int d = cellHi - j;
+        double dist = f.metresPerStep[rowOf(i, j)];
+        for (int s = 2; i + s < nMaj; s++) {
+            double t = m * s;
+            if (t > d + 0.5) {
+                return false;
+            }
+            double ft = Math.floor(t);
+            int jj = j + (int) ft;
+            dist += f.metresPerStep[rowOf(i + s - 1, Math.min(cellHi, j + (int) Math.floor(m * (s - 1) + 0.5)))];
+            double z = sampleAt(i + s, jj, t - ft);
+            if (z == z && z - bc * dist * dist > z0 + dist * tan) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -434,7 +498,7 @@ final class SunSweep {
             int base = baseI[i];
             // lines kFrom + q whose two minor cells jj, jj + 1 are both on the grid
             int qa = Math.max(0, -kFrom - pfi);
-            int qb = Math.min(lines - 1, nMin - 2 - kFrom - pfi);
+            int qb = Math.min(lines - 1, cellHi - 1 - kFrom - pfi);
             for (int q = 0; q < Math.min(qa, lines); q++) {
                 advance(best, prev, h, q, lineSample(kFrom + q, i), drop);
             }
@@ -495,9 +559,8 @@ final class SunSweep {
                 if (z0 != z0) {
                     result = 0f;
                 } else {
-                    double ha = h[q];
-                    double hb = h[q + 1];
-                    boolean shadow = between(ha, hb, phi, z0 - relief) > z0;
+                    boolean shadow = j >= jTraced ? rayBlockedToEdge(i, j, z0)
+                            : between(h[q], h[q + 1], phi, z0 - relief) > z0;
                     if (!shadow) {
                         if (inner && j + 1 < nMin) {
                             int u = up + sj * j;
@@ -558,7 +621,8 @@ final class SunSweep {
             } else {
                 double ha = a.height[at];
                 double hb = b.height[at];
-                result = (between(ha, hb, phi, z0 - relief) > z0 || localBlocked(i, j, z0)) ? 1f : 0f;
+                boolean lines = j >= jTraced ? rayBlockedToEdge(i, j, z0) : between(ha, hb, phi, z0 - relief) > z0;
+                result = (lines || localBlocked(i, j, z0)) ? 1f : 0f;
             }
             int col = c0 + ci * i + cj * j;
             int row = r0 + ri * i + rj * j;
