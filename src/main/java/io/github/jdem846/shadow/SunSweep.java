@@ -66,6 +66,11 @@ final class SunSweep {
     private final int cellHi;
     private final boolean exitIsRootEdge;
     /**
+     * True (bilinear sampling only) when this grid's last major index nMaj − 1 is the root's (the file's) upstream
+     * edge: the lines then also read the outer half cell beyond it, at the edge itself, as the bilinear march does.
+     */
+    private final boolean upstreamEdgeSample;
+    /**
      * Cells j ≥ jTraced have rays that leave the grid through the root's exit side before {@link #EDGE_TRACE_STEPS}
      * major steps: they are traced along their own ray up to the edge instead of from the lines' shadow heights,
      * which carry terrain the cell's ray never reaches (up to a cell beyond its exit). Integer.MAX_VALUE = none.
@@ -127,10 +132,15 @@ final class SunSweep {
         int dir = frame.xMajor ? rj : cj;
         int rootHi = Math.max((rootFirst - start) * dir, (rootLast - start) * dir);
         exitIsRootEdge = rootHi <= nMin - 1;
+        int rootFirstMaj = frame.xMajor ? -at.col() : -at.row();
+        int rootLastMaj = frame.xMajor ? at.rootWidth() - 1 - at.col() : at.rootHeight() - 1 - at.row();
+        int startMaj = frame.xMajor ? c0 : r0;
+        int dirMaj = frame.xMajor ? ci : ri;
+        upstreamEdgeSample = bilinear && Math.max((rootFirstMaj - startMaj) * dirMaj, (rootLastMaj - startMaj) * dirMaj) == nMaj - 1;
         cellHi = Math.min(nMin - 1, rootHi);
         // d = cellHi − j: the ray leaves before step S when m·S > d + ½, i.e. d ≤ ceil(m·S − ½) − 1
         int dTraced = (int) Math.ceil(m * EDGE_TRACE_STEPS - 0.5) - 1;
-        jTraced = exitIsRootEdge && dTraced >= 0 ? cellHi - dTraced : Integer.MAX_VALUE;
+        jTraced = bilinear && exitIsRootEdge && dTraced >= 0 ? cellHi - dTraced : Integer.MAX_VALUE;
         double base = Math.floor(m * i0);
         pf = new int[nMaj];
         pr = new double[nMaj];
@@ -294,30 +304,27 @@ final class SunSweep {
     }
 
     /**
-     * For a cell j ≥ {@link #jTraced}: true when the terrain along its own ray, sampled as the lines are (at whole
-     * major steps 2, 3, … , linear across), is above the ray before the ray leaves the grid through the file's side
-     * edge (the article's test 2 applied to this cell's ray, not to its neighbouring lines). The first step is
-     * {@link #localBlocked}'s.
+     * For a cell j ≥ {@link #jTraced}: true when its own ray, after the first step ({@link #localBlocked}), meets
+     * the bilinear surface before it leaves the grid through the file's side edge. It is marched as {@code exact}
+     * marches, in eighth steps, so these cells get the reference's answer; there are at most about m·S + 1 of them
+     * per major index, each at most 8·S samples.
      */
     private boolean rayBlockedToEdge(int i, int j, double z0) {
+        double d = f.metresPerStep[rowOf(i, j)];
         double tan = f.tanElevation;
         double bc = f.curvature;
-        int d = cellHi - j;
-        double dist = f.metresPerStep[rowOf(i, j)];
-        for (int s = 2; i + s < nMaj; s++) {
-            double t = m * s;
-            if (t > d + 0.5) {
+        double room = cellHi - j + 0.5;
+        for (int q = SUB_STEPS + 1; ; q++) {
+            double t = (double) q / SUB_STEPS;
+            if (m * t > room || i + t > nMaj - 0.5) {
                 return false;
             }
-            double ft = Math.floor(t);
-            int jj = j + (int) ft;
-            dist += f.metresPerStep[rowOf(i + s - 1, Math.min(cellHi, j + (int) Math.floor(m * (s - 1) + 0.5)))];
-            double z = sampleAt(i + s, jj, t - ft);
+            double z = frameSample(i, j, t);
+            double dist = t * d;
             if (z == z && z - bc * dist * dist > z0 + dist * tan) {
                 return true;
             }
         }
-        return false;
     }
 
     /**
@@ -381,10 +388,14 @@ final class SunSweep {
                 }
             }
             double p = pos[i - wi0];
-            if (i + 2 <= iHi) {
-                double z = lineSample(k, i + 2);
+            // the sample two steps upstream, or the one on the file's upstream outer edge half a step beyond the last
+            // whole step (joins for i = nMaj − 2, as a sample at i + 2 would)
+            boolean half = i + 2 > iHi && i == nMaj - 2 && iHi == nMaj - 1 && upstreamEdgeSample;
+            if (i + 2 <= iHi || half) {
+                double z = half ? edgeSample(k) : lineSample(k, i + 2);
                 if (z == z) {
-                    double pz = pos[i + 2 - wi0];
+                    double pz = half ? pos[iHi - wi0] - 0.5 * f.metresPerStep[rowOf(iHi, lineRow(k, iHi))]
+                            : pos[i + 2 - wi0];
                     if (bc == 0) {
                         double val = z + tan * pz;
                         if (val > best) {
@@ -440,12 +451,35 @@ final class SunSweep {
         return Math.max(0, Math.min(nMin - 1, k + pf[i] + (pr[i] >= 0.5 ? 1 : 0)));
     }
 
+    /**
+     * Line k on the file's upstream outer cell edge, half a major step beyond its last whole step nMaj − 1 (read
+     * from the edge row, as the bilinear march reads the outer half cell), NaN when off the grid or no-data.
+     */
+    private double edgeSample(int k) {
+        int i = nMaj - 1;
+        double t = pr[i] + 0.5 * m;
+        double ft = Math.floor(t);
+        return sampleAt(i, k + pf[i] + (int) ft, t - ft);
+    }
+
+    /**
+     * The running maximum's "sample at i + 1" before a walk that starts at the file's upstream edge (i = nMaj − 1):
+     * the edge sample, half a step farther, so that it joins the shadow height from i = nMaj − 2 on.
+     */
+    private double edgeStart(int k, double drop) {
+        double z = edgeSample(k);
+        return z == z ? z - 0.5 * drop : Double.NEGATIVE_INFINITY;
+    }
+
     /** {@link #walkLine} for hard shadows on a grid with one step length and no curvature: a running maximum. */
     private void walkUniform(int k, int iLo, int iHi, int wi0, int wi1, double[] height) {
         double drop = f.tanElevation * uniformStep;
         // best = max over samples i' ≥ i + 2 of z(i') − (i' − i)·drop, kept relative to the current i
         double best = Double.NEGATIVE_INFINITY;
         double prev = Double.NEGATIVE_INFINITY;   // sample at i + 1 (joins best one step later)
+        if (iHi == nMaj - 1 && upstreamEdgeSample) {
+            prev = edgeStart(k, drop);
+        }
         for (int i = iHi; i >= iLo; i--) {
             if (i <= wi1) {
                 height[i - wi0] = best;
@@ -485,6 +519,11 @@ final class SunSweep {
         double[] h = new double[lines];
         java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
         java.util.Arrays.fill(prev, Double.NEGATIVE_INFINITY);
+        if (iStart == nMaj - 1 && upstreamEdgeSample) {
+            for (int q = 0; q < lines; q++) {
+                prev[q] = edgeStart(kFrom + q, drop);
+            }
+        }
         float[] out = w.out;
         CellWindow win = w.win;
         int outStrideJ = rj * win.width() + cj;
