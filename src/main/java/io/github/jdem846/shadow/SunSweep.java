@@ -31,7 +31,7 @@ final class SunSweep {
     private static final int LINES_PER_TASK = 48;
     private static final int SUB_STEPS = 8;
     /** Cells whose ray leaves through the file's side edge within this many major steps are traced directly. */
-    static int EDGE_TRACE_STEPS = 8;
+    private static final int EDGE_TRACE_STEPS = 4;
 
     private final float[] v;
     private final RayFrame f;
@@ -316,10 +316,27 @@ final class SunSweep {
         double room = cellHi - j + 0.5;
         for (int q = SUB_STEPS + 1; ; q++) {
             double t = (double) q / SUB_STEPS;
-            if (m * t > room || i + t > nMaj - 0.5) {
+            double y = m * t;
+            if (y > room || i + t > nMaj - 0.5) {
                 return false;
             }
-            double z = frameSample(i, j, t);
+            // bilinear in the frame: major cells ia, ia + 1 (clamped at the last), minor cells ja, ja + 1 (clamped
+            // at the last, the outer half cell); a no-data corner falls back to the renormalising sampler
+            int ia = i + q / SUB_STEPS;
+            double wa = (double) (q % SUB_STEPS) / SUB_STEPS;
+            int ib = Math.min(ia + 1, nMaj - 1);
+            int jo = (int) y;
+            double wb = y - jo;
+            int ja = j + jo;
+            int jb = Math.min(ja + 1, cellHi);
+            double z00 = v[idx(ia, ja)];
+            double z10 = v[idx(ib, ja)];
+            double z01 = v[idx(ia, jb)];
+            double z11 = v[idx(ib, jb)];
+            double z = (z00 + (z10 - z00) * wa) * (1 - wb) + (z01 + (z11 - z01) * wa) * wb;
+            if (z != z) {
+                z = frameSample(i, j, t);
+            }
             double dist = t * d;
             if (z == z && z - bc * dist * dist > z0 + dist * tan) {
                 return true;
