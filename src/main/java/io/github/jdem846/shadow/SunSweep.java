@@ -19,6 +19,13 @@ import java.util.concurrent.RecursiveAction;
  * within (2·zMax − zMin − z0)/tan(elevation) of the cell, so a window computed with that halo ({@link
  * ShadowHalo#sweepSteps}) equals the same cells of the whole grid; interpolating toward a far, low line would not.
  *
+ * <p>Edges (bilinear sampling): terrain ends at the outer cell edges of the file's grid, as for a marched ray (test
+ * 2). On the side through which rays leave, line samples beyond the outer edge are no terrain, and a cell whose own
+ * ray leaves through it within a few steps is marched along that ray in eighth steps instead of taking its lines'
+ * heights (a line runs on up to a cell beyond where the cell's ray has left); at the upstream edge the lines also read
+ * the outer half cell. The side of a window that is not the file's edge ({@link GridGeometry#placement()}) reads on
+ * as before, so a window equals the whole grid.
+ *
  * <p>Work: one sample per line per column plus a constant per cell, whatever the sun elevation. Lines are split
  * into chunks across a ForkJoinPool; every line is computed the same way in any chunk, so the mask does not depend
  * on the thread count.
@@ -136,7 +143,8 @@ final class SunSweep {
         int rootLastMaj = frame.xMajor ? at.rootWidth() - 1 - at.col() : at.rootHeight() - 1 - at.row();
         int startMaj = frame.xMajor ? c0 : r0;
         int dirMaj = frame.xMajor ? ci : ri;
-        upstreamEdgeSample = bilinear && Math.max((rootFirstMaj - startMaj) * dirMaj, (rootLastMaj - startMaj) * dirMaj) == nMaj - 1;
+        int rootHiMaj = Math.max((rootFirstMaj - startMaj) * dirMaj, (rootLastMaj - startMaj) * dirMaj);
+        upstreamEdgeSample = bilinear && rootHiMaj == nMaj - 1;
         cellHi = Math.min(nMin - 1, rootHi);
         // d = cellHi − j: the ray leaves before step S when m·S > d + ½, i.e. d ≤ ceil(m·S − ½) − 1
         int dTraced = (int) Math.ceil(m * EDGE_TRACE_STEPS - 0.5) - 1;
