@@ -19,6 +19,13 @@ import java.util.concurrent.RecursiveAction;
  * within (2·zMax − zMin − z0)/tan(elevation) of the cell, so a window computed with that halo ({@link
  * ShadowHalo#sweepSteps}) equals the same cells of the whole grid; interpolating toward a far, low line would not.
  *
+ * <p>Edges (bilinear sampling): terrain ends at the outer cell edges of the file's grid, as for a marched ray (test
+ * 2). On the side through which rays leave, line samples beyond the outer edge are no terrain, and a cell whose own
+ * ray leaves through it within a few steps is marched along that ray in eighth steps instead of taking its lines'
+ * heights (a line runs on up to a cell beyond where the cell's ray has left); at the upstream edge the lines also read
+ * the outer half cell. The side of a window that is not the file's edge ({@link GridGeometry#placement()}) reads on
+ * as before, so a window equals the whole grid.
+ *
  * <p>Work: one sample per line per column plus a constant per cell, whatever the sun elevation. Lines are split
  * into chunks across a ForkJoinPool; every line is computed the same way in any chunk, so the mask does not depend
  * on the thread count.
@@ -30,6 +37,8 @@ final class SunSweep {
 
     private static final int LINES_PER_TASK = 48;
     private static final int SUB_STEPS = 8;
+    /** Cells whose ray leaves through the file's side edge within this many major steps are traced directly. */
+    private static final int EDGE_TRACE_STEPS = 4;
 
     private final float[] v;
     private final RayFrame f;
@@ -54,6 +63,26 @@ final class SunSweep {
     private final double uniformStep;
     /** zMax − zMin of the whole DEM: a line whose shadow height is lower than z0 − relief counts as no terrain. */
     private final double relief;
+
+    /**
+     * The last minor cell the lines read, min(nMin − 1, the root grid's last one in this frame). Rays leave the grid
+     * through this side (j increases toward the sun): when it is the root's (the file's) edge, terrain ends half a
+     * cell beyond it, at the outer cell edge, where a marched ray leaves the grid; a side of a window that is not
+     * the file's edge keeps the one-cell clamp (terrain continues there in the file, and the halo bounds its effect).
+     */
+    private final int cellHi;
+    private final boolean exitIsRootEdge;
+    /**
+     * True (bilinear sampling only) when this grid's last major index nMaj − 1 is the root's (the file's) upstream
+     * edge: the lines then also read the outer half cell beyond it, at the edge itself, as the bilinear march does.
+     */
+    private final boolean upstreamEdgeSample;
+    /**
+     * Cells j ≥ jTraced have rays that leave the grid through the root's exit side before {@link #EDGE_TRACE_STEPS}
+     * major steps: they are traced along their own ray up to the edge instead of from the lines' shadow heights,
+     * which carry terrain the cell's ray never reaches (up to a cell beyond its exit). Integer.MAX_VALUE = none.
+     */
+    private final int jTraced;
 
     /** When false, every case takes the line-by-line path ({@link #bands}): the reference of the tests. */
     private final boolean lockstepAllowed;
@@ -103,6 +132,23 @@ final class SunSweep {
         GridGeometry.Placement at = dem.geometry().placement();
         long i0 = frame.xMajor ? (ci > 0 ? at.col() : (long) at.rootWidth() - w - at.col())
                 : (ri > 0 ? at.row() : (long) at.rootHeight() - h - at.row());
+        // the root's last minor cell in this grid's frame: j = (cell − start) · direction, the larger of the ends
+        int rootFirst = frame.xMajor ? -at.row() : -at.col();
+        int rootLast = frame.xMajor ? at.rootHeight() - 1 - at.row() : at.rootWidth() - 1 - at.col();
+        int start = frame.xMajor ? r0 : c0;
+        int dir = frame.xMajor ? rj : cj;
+        int rootHi = Math.max((rootFirst - start) * dir, (rootLast - start) * dir);
+        exitIsRootEdge = rootHi <= nMin - 1;
+        int rootFirstMaj = frame.xMajor ? -at.col() : -at.row();
+        int rootLastMaj = frame.xMajor ? at.rootWidth() - 1 - at.col() : at.rootHeight() - 1 - at.row();
+        int startMaj = frame.xMajor ? c0 : r0;
+        int dirMaj = frame.xMajor ? ci : ri;
+        int rootHiMaj = Math.max((rootFirstMaj - startMaj) * dirMaj, (rootLastMaj - startMaj) * dirMaj);
+        upstreamEdgeSample = bilinear && rootHiMaj == nMaj - 1;
+        cellHi = Math.min(nMin - 1, rootHi);
+        // d = cellHi − j: the ray leaves before step S when m·S > d + ½, i.e. d ≤ ceil(m·S − ½) − 1
+        int dTraced = (int) Math.ceil(m * EDGE_TRACE_STEPS - 0.5) - 1;
+        jTraced = bilinear && exitIsRootEdge && dTraced >= 0 ? cellHi - dTraced : Integer.MAX_VALUE;
         double base = Math.floor(m * i0);
         pf = new int[nMaj];
         pr = new double[nMaj];
@@ -217,10 +263,19 @@ final class SunSweep {
 
     /** The terrain on line k at major index i (NaN = no-data or off the grid). */
     private double lineSample(int k, int i) {
-        int jj = k + pf[i];
-        double fr = pr[i];
+        return sampleAt(i, k + pf[i], pr[i]);
+    }
+
+    /**
+     * The terrain at major index i, minor position jj + fr (fr in [0, 1)), NaN = no-data or off the grid. The
+     * position is compared with the edges in that integer-and-fraction form, so a window decides exactly as the
+     * whole grid does. Bilinear: linear between cells jj and jj + 1; below the first cell the first one is read up
+     * to a cell beyond it (no ray leaves the grid there: the lines beyond are only interpolation partners of the
+     * first cells); beyond the last cell, up to the outer cell edge at the file's edge, else a cell beyond.
+     */
+    private double sampleAt(int i, int jj, double fr) {
         if (bilinear) {
-            if (jj >= 0 && jj < nMin - 1) {
+            if (jj >= 0 && jj < cellHi) {
                 int at = baseI[i] + strideJ * jj;
                 double za = v[at];
                 if (fr == 0) {
@@ -232,14 +287,14 @@ final class SunSweep {
                 }
                 return za == za ? za : zb;
             }
-            if (jj < -1 || jj > nMin - 1 || (jj == -1 && fr == 0)) {
+            if (jj < -1 || (jj == -1 && fr == 0) || jj > cellHi || (exitIsRootEdge && jj == cellHi && fr > 0.5)) {
                 return Double.NaN;
             }
             if (fr == 0) {
                 return v[idx(i, jj)];
             }
             int ja = Math.max(jj, 0);
-            int jb = Math.min(jj + 1, nMin - 1);
+            int jb = Math.min(jj + 1, cellHi);
             double za = v[idx(i, ja)];
             double zb = v[idx(i, jb)];
             if (za == za && zb == zb) {
@@ -248,12 +303,53 @@ final class SunSweep {
             return za == za ? za : zb;
         }
         double pos = jj + fr;
-        if (pos < -0.5 || pos > nMin - 0.5) {
+        if (pos < -0.5 || pos > cellHi + 0.5) {
             return Double.NaN;
         }
         int jn = (int) Math.floor(pos + 0.5);
-        jn = Math.max(0, Math.min(nMin - 1, jn));
+        jn = Math.max(0, Math.min(cellHi, jn));
         return v[idx(i, jn)];
+    }
+
+    /**
+     * For a cell j ≥ {@link #jTraced}: true when its own ray, after the first step ({@link #localBlocked}), meets
+     * the bilinear surface before it leaves the grid through the file's side edge. It is marched as {@code exact}
+     * marches, in eighth steps, so these cells get the reference's answer; there are at most about m·S + 1 of them
+     * per major index, each at most 8·S samples.
+     */
+    private boolean rayBlockedToEdge(int i, int j, double z0) {
+        double d = f.metresPerStep[rowOf(i, j)];
+        double tan = f.tanElevation;
+        double bc = f.curvature;
+        double room = cellHi - j + 0.5;
+        for (int q = SUB_STEPS + 1; ; q++) {
+            double t = (double) q / SUB_STEPS;
+            double y = m * t;
+            if (y > room || i + t > nMaj - 0.5) {
+                return false;
+            }
+            // bilinear in the frame: major cells ia, ia + 1 (clamped at the last), minor cells ja, ja + 1 (clamped
+            // at the last, the outer half cell); a no-data corner falls back to the renormalising sampler
+            int ia = i + q / SUB_STEPS;
+            double wa = (double) (q % SUB_STEPS) / SUB_STEPS;
+            int ib = Math.min(ia + 1, nMaj - 1);
+            int jo = (int) y;
+            double wb = y - jo;
+            int ja = j + jo;
+            int jb = Math.min(ja + 1, cellHi);
+            double z00 = v[idx(ia, ja)];
+            double z10 = v[idx(ib, ja)];
+            double z01 = v[idx(ia, jb)];
+            double z11 = v[idx(ib, jb)];
+            double z = (z00 + (z10 - z00) * wa) * (1 - wb) + (z01 + (z11 - z01) * wa) * wb;
+            if (z != z) {
+                z = frameSample(i, j, t);
+            }
+            double dist = t * d;
+            if (z == z && z - bc * dist * dist > z0 + dist * tan) {
+                return true;
+            }
+        }
     }
 
     /**
@@ -317,10 +413,14 @@ final class SunSweep {
                 }
             }
             double p = pos[i - wi0];
-            if (i + 2 <= iHi) {
-                double z = lineSample(k, i + 2);
+            // the sample two steps upstream, or the one on the file's upstream outer edge half a step beyond the last
+            // whole step (joins for i = nMaj − 2, as a sample at i + 2 would)
+            boolean half = i + 2 > iHi && i == nMaj - 2 && iHi == nMaj - 1 && upstreamEdgeSample;
+            if (i + 2 <= iHi || half) {
+                double z = half ? edgeSample(k) : lineSample(k, i + 2);
                 if (z == z) {
-                    double pz = pos[i + 2 - wi0];
+                    double pz = half ? pos[iHi - wi0] - 0.5 * f.metresPerStep[rowOf(iHi, lineRow(k, iHi))]
+                            : pos[i + 2 - wi0];
                     if (bc == 0) {
                         double val = z + tan * pz;
                         if (val > best) {
@@ -376,12 +476,35 @@ final class SunSweep {
         return Math.max(0, Math.min(nMin - 1, k + pf[i] + (pr[i] >= 0.5 ? 1 : 0)));
     }
 
+    /**
+     * Line k on the file's upstream outer cell edge, half a major step beyond its last whole step nMaj − 1 (read
+     * from the edge row, as the bilinear march reads the outer half cell), NaN when off the grid or no-data.
+     */
+    private double edgeSample(int k) {
+        int i = nMaj - 1;
+        double t = pr[i] + 0.5 * m;
+        double ft = Math.floor(t);
+        return sampleAt(i, k + pf[i] + (int) ft, t - ft);
+    }
+
+    /**
+     * The running maximum's "sample at i + 1" before a walk that starts at the file's upstream edge (i = nMaj − 1):
+     * the edge sample, half a step farther, so that it joins the shadow height from i = nMaj − 2 on.
+     */
+    private double edgeStart(int k, double drop) {
+        double z = edgeSample(k);
+        return z == z ? z - 0.5 * drop : Double.NEGATIVE_INFINITY;
+    }
+
     /** {@link #walkLine} for hard shadows on a grid with one step length and no curvature: a running maximum. */
     private void walkUniform(int k, int iLo, int iHi, int wi0, int wi1, double[] height) {
         double drop = f.tanElevation * uniformStep;
         // best = max over samples i' ≥ i + 2 of z(i') − (i' − i)·drop, kept relative to the current i
         double best = Double.NEGATIVE_INFINITY;
         double prev = Double.NEGATIVE_INFINITY;   // sample at i + 1 (joins best one step later)
+        if (iHi == nMaj - 1 && upstreamEdgeSample) {
+            prev = edgeStart(k, drop);
+        }
         for (int i = iHi; i >= iLo; i--) {
             if (i <= wi1) {
                 height[i - wi0] = best;
@@ -421,6 +544,11 @@ final class SunSweep {
         double[] h = new double[lines];
         java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
         java.util.Arrays.fill(prev, Double.NEGATIVE_INFINITY);
+        if (iStart == nMaj - 1 && upstreamEdgeSample) {
+            for (int q = 0; q < lines; q++) {
+                prev[q] = edgeStart(kFrom + q, drop);
+            }
+        }
         float[] out = w.out;
         CellWindow win = w.win;
         int outStrideJ = rj * win.width() + cj;
@@ -434,7 +562,7 @@ final class SunSweep {
             int base = baseI[i];
             // lines kFrom + q whose two minor cells jj, jj + 1 are both on the grid
             int qa = Math.max(0, -kFrom - pfi);
-            int qb = Math.min(lines - 1, nMin - 2 - kFrom - pfi);
+            int qb = Math.min(lines - 1, cellHi - 1 - kFrom - pfi);
             for (int q = 0; q < Math.min(qa, lines); q++) {
                 advance(best, prev, h, q, lineSample(kFrom + q, i), drop);
             }
@@ -495,9 +623,8 @@ final class SunSweep {
                 if (z0 != z0) {
                     result = 0f;
                 } else {
-                    double ha = h[q];
-                    double hb = h[q + 1];
-                    boolean shadow = between(ha, hb, phi, z0 - relief) > z0;
+                    boolean shadow = j >= jTraced ? rayBlockedToEdge(i, j, z0)
+                            : between(h[q], h[q + 1], phi, z0 - relief) > z0;
                     if (!shadow) {
                         if (inner && j + 1 < nMin) {
                             int u = up + sj * j;
@@ -558,7 +685,8 @@ final class SunSweep {
             } else {
                 double ha = a.height[at];
                 double hb = b.height[at];
-                result = (between(ha, hb, phi, z0 - relief) > z0 || localBlocked(i, j, z0)) ? 1f : 0f;
+                boolean lines = j >= jTraced ? rayBlockedToEdge(i, j, z0) : between(ha, hb, phi, z0 - relief) > z0;
+                result = (lines || localBlocked(i, j, z0)) ? 1f : 0f;
             }
             int col = c0 + ci * i + cj * j;
             int row = r0 + ri * i + rj * j;
