@@ -6,13 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.testing.PoolExtension;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
-import java.util.concurrent.ForkJoinPool;
-import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * The algorithms against each other on real DEMs: the sweep against the march it stands for, and the sweep and the
@@ -22,22 +22,17 @@ import org.junit.jupiter.api.Test;
 class ShadowAgreementTest {
 
     private static final double[] OFF_AXIS = {160, 250, 300};
-    private static ForkJoinPool pool;
+    @RegisterExtension
+    static final PoolExtension POOL = new PoolExtension(2);
     private static Dem bigTujunga;
     private static Dem jacksboro;
 
     @BeforeAll
     static void start() throws IOException {
-        pool = new ForkJoinPool(2);
         // 300×200 cells of the steepest part of Big Tujunga (UTM 11N, 30 m), 614–2095 m
         bigTujunga = DemReader.read(Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.tif")).crop(420, 120, 300, 200);
         // 200×150 cells of Jacksboro (SRTM 3″, lat/lon: ≈ 74 × 93 m cells at 36.6° N)
         jacksboro = DemReader.read(Path.of("testdata/dem/jacksboro_srtm3s_wgs84.tif")).crop(100, 100, 200, 150);
-    }
-
-    @AfterAll
-    static void stop() {
-        pool.shutdownNow();
     }
 
     private static String pct(double fraction) {
@@ -60,14 +55,14 @@ class ShadowAgreementTest {
                         : new double[] {0, 90, 180, 270};
                 for (double az : onLines) {
                     LightDirection l = new LightDirection(az, e);
-                    double d = ShadowAlgorithm.SWEEP.compute(dem, l, sweep, pool)
-                            .disagreement(ShadowAlgorithm.MARCH.compute(dem, l, march, pool));
+                    double d = ShadowAlgorithm.SWEEP.compute(dem, l, sweep, POOL.get())
+                            .disagreement(ShadowAlgorithm.MARCH.compute(dem, l, march, POOL.get()));
                     assertEquals(0, d, "az=" + az + " e=" + e + " on " + dem + ": " + pct(d));
                 }
                 for (double az : OFF_AXIS) {
                     LightDirection l = new LightDirection(az, e);
-                    double d = ShadowAlgorithm.SWEEP.compute(dem, l, sweep, pool)
-                            .disagreement(ShadowAlgorithm.MARCH.compute(dem, l, march, pool));
+                    double d = ShadowAlgorithm.SWEEP.compute(dem, l, sweep, POOL.get())
+                            .disagreement(ShadowAlgorithm.MARCH.compute(dem, l, march, POOL.get()));
                     assertTrue(d < 0.02, "az=" + az + " e=" + e + " on " + dem + ": " + pct(d));
                 }
             }
@@ -84,10 +79,10 @@ class ShadowAgreementTest {
             for (double e : new double[] {5, 20}) {
                 for (double az : OFF_AXIS) {
                     LightDirection l = new LightDirection(az, e);
-                    ShadowMask exact = ShadowAlgorithm.EXACT.compute(dem, l, ShadowOptions.DEFAULTS, pool);
-                    double sweep = ShadowAlgorithm.SWEEP.compute(dem, l, ShadowOptions.DEFAULTS, pool)
+                    ShadowMask exact = ShadowAlgorithm.EXACT.compute(dem, l, ShadowOptions.DEFAULTS, POOL.get());
+                    double sweep = ShadowAlgorithm.SWEEP.compute(dem, l, ShadowOptions.DEFAULTS, POOL.get())
                             .disagreement(exact);
-                    double article = ShadowAlgorithm.MARCH.compute(dem, l, ShadowOptions.DEFAULTS, pool)
+                    double article = ShadowAlgorithm.MARCH.compute(dem, l, ShadowOptions.DEFAULTS, POOL.get())
                             .disagreement(exact);
                     String what = (dem == bigTujunga ? "Big Tujunga" : "Jacksboro") + " az=" + az + " e=" + e
                             + ": sweep " + pct(sweep) + ", article march " + pct(article) + ", shadowed "
@@ -120,7 +115,7 @@ class ShadowAgreementTest {
         LightDirection east45 = new LightDirection(90, 45);
         for (ShadowAlgorithm a : new ShadowAlgorithm[] {ShadowAlgorithm.MARCH, ShadowAlgorithm.SWEEP,
             ShadowAlgorithm.EXACT}) {
-            ShadowMask m = a.compute(wall, east45, ShadowOptions.DEFAULTS, pool);
+            ShadowMask m = a.compute(wall, east45, ShadowOptions.DEFAULTS, POOL.get());
             for (int r = 0; r < h; r++) {
                 for (int c = 0; c < w; c++) {
                     boolean expected = c < 30 && 615 > (30 - c) * 30;

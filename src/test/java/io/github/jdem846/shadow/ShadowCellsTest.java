@@ -6,26 +6,16 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.testing.PoolExtension;
 import java.util.SplittableRandom;
-import java.util.concurrent.ForkJoinPool;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /** {@link ShadowAlgorithm#computeCells}: the listed cells of a whole-grid computation, in the order given. */
 class ShadowCellsTest {
 
-    private static ForkJoinPool pool;
-
-    @BeforeAll
-    static void start() {
-        pool = new ForkJoinPool(2);
-    }
-
-    @AfterAll
-    static void stop() {
-        pool.shutdownNow();
-    }
+    @RegisterExtension
+    static final PoolExtension POOL = new PoolExtension(2);
 
     /** A rough DEM with a few no-data cells, so that sampled cells include no-data ones. */
     private static Dem dem() {
@@ -62,8 +52,8 @@ class ShadowCellsTest {
                 for (double elevation : new double[] {-1, 4, 20, 90}) {
                     for (double azimuth : new double[] {160, 250}) {
                         LightDirection light = new LightDirection(azimuth, elevation);
-                        float[] whole = alg.compute(dem, light, opt, pool).backingArray();
-                        float[] listed = alg.computeCells(dem, light, opt, pool, cells);
+                        float[] whole = alg.compute(dem, light, opt, POOL.get()).backingArray();
+                        float[] listed = alg.computeCells(dem, light, opt, POOL.get(), cells);
                         assertEquals(cells.length, listed.length);
                         for (int q = 0; q < cells.length; q++) {
                             assertEquals(whole[cells[q]], listed[q], 0f, () -> alg + " " + opt + " " + light);
@@ -80,10 +70,10 @@ class ShadowCellsTest {
     void emptyListAndBadIndices() {
         Dem dem = dem();
         LightDirection light = new LightDirection(250, 5);
-        assertEquals(0, ShadowAlgorithm.EXACT.computeCells(dem, light, ShadowOptions.DEFAULTS, pool,
+        assertEquals(0, ShadowAlgorithm.EXACT.computeCells(dem, light, ShadowOptions.DEFAULTS, POOL.get(),
                 new int[0]).length);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> ShadowAlgorithm.MARCH.computeCells(dem, light, ShadowOptions.DEFAULTS, pool,
+                () -> ShadowAlgorithm.MARCH.computeCells(dem, light, ShadowOptions.DEFAULTS, POOL.get(),
                         new int[] {0, 57 * 43}));
         assertTrue(e.getMessage().contains("2451"), e.getMessage());
     }

@@ -7,11 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.testing.PoolExtension;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.concurrent.ForkJoinPool;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -21,17 +20,8 @@ import org.junit.jupiter.params.provider.EnumSource;
  */
 class ShadowCurvatureTest {
 
-    private static ForkJoinPool pool;
-
-    @BeforeAll
-    static void start() {
-        pool = new ForkJoinPool(2);
-    }
-
-    @AfterAll
-    static void stop() {
-        pool.shutdownNow();
-    }
+    @RegisterExtension
+    static final PoolExtension POOL = new PoolExtension(2);
 
     @ParameterizedTest
     @EnumSource(value = ShadowAlgorithm.class, names = {"MARCH", "SWEEP", "EXACT"})
@@ -57,7 +47,7 @@ class ShadowCurvatureTest {
             double b = curved ? (1 - 0.13) / (2 * 6_371_000.0) : 0;
             double length = curved ? (Math.sqrt(t * t + 4 * b * wall) - t) / (2 * b) : wall / t;
             ShadowOptions o = ShadowOptions.DEFAULTS.withEarthCurvature(curved, 0.13, 6_371_000);
-            ShadowMask m = algorithm.compute(dem, new LightDirection(270, 1), o, pool);
+            ShadowMask m = algorithm.compute(dem, new LightDirection(270, 1), o, POOL.get());
             for (int r = 0; r < h; r++) {
                 int last = -1;
                 for (int c = 3; c < w; c++) {
@@ -88,9 +78,9 @@ class ShadowCurvatureTest {
             for (boolean soft : new boolean[] {false, true}) {
                 LightDirection l = new LightDirection(250, 1);
                 ShadowOptions off = ShadowOptions.DEFAULTS.withSoftShadows(soft);
-                float[] flat = algorithm.compute(dem, l, off, pool).backingArray();
-                float[] round = algorithm.compute(dem, l, off.withEarthCurvature(true), pool).backingArray();
-                float[] k1 = algorithm.compute(dem, l, off.withEarthCurvature(true, 1, Double.NaN), pool)
+                float[] flat = algorithm.compute(dem, l, off, POOL.get()).backingArray();
+                float[] round = algorithm.compute(dem, l, off.withEarthCurvature(true), POOL.get()).backingArray();
+                float[] k1 = algorithm.compute(dem, l, off.withEarthCurvature(true, 1, Double.NaN), POOL.get())
                         .backingArray();
                 String what = algorithm + " soft=" + soft + " on " + dem.width() + "×" + dem.height();
                 // Not for the soft sweep: its horizon angle comes from the occluder that sets the running shadow

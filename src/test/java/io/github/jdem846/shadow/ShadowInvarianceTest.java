@@ -11,12 +11,13 @@ import io.github.jdem846.render.RenderProgress;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Renderer;
 import io.github.jdem846.render.Scene;
+import io.github.jdem846.testing.PoolExtension;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.ForkJoinPool;
-import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * The mask depends on nothing but the DEM, the sun and the options: not on the thread count, not on the renderer's
@@ -27,22 +28,17 @@ class ShadowInvarianceTest {
 
     private static final ShadowAlgorithm[] ALGORITHMS = {ShadowAlgorithm.MARCH, ShadowAlgorithm.SWEEP,
         ShadowAlgorithm.EXACT};
-    private static ForkJoinPool pool;
+    @RegisterExtension
+    static final PoolExtension POOL = new PoolExtension(2);
     private static Dem bigTujunga;
     private static Dem luxembourg;
     private static Dem jacksboro;
 
     @BeforeAll
     static void start() throws IOException {
-        pool = new ForkJoinPool(2);
         bigTujunga = DemReader.read(Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.tif"));
         luxembourg = DemReader.read(Path.of("testdata/dem/luxembourg_srtm30s_wgs84.tif"));
         jacksboro = DemReader.read(Path.of("testdata/dem/jacksboro_srtm3s_wgs84.tif"));
-    }
-
-    @AfterAll
-    static void stop() {
-        pool.shutdownNow();
     }
 
     /**
@@ -99,7 +95,7 @@ class ShadowInvarianceTest {
                 if (reference == null) {
                     reference = argb;
                     referenceShadows = shadows;
-                    assertArrayEquals(a.compute(dem, new LightDirection(250, 6), ShadowOptions.DEFAULTS, pool)
+                    assertArrayEquals(a.compute(dem, new LightDirection(250, 6), ShadowOptions.DEFAULTS, POOL.get())
                             .backingArray(), shadows, a + ": the renderer's shadows are the algorithm's mask");
                 } else {
                     String what = a + " threads=" + setting[0] + " tile=" + setting[1];
@@ -137,9 +133,9 @@ class ShadowInvarianceTest {
                         if (a == ShadowAlgorithm.EXACT && dem == jacksboro && (soft || l.elevationDegrees() != 20)) {
                             continue;
                         }
-                        ShadowMask whole = a.compute(dem, l, o, pool);
+                        ShadowMask whole = a.compute(dem, l, o, POOL.get());
                         for (CellWindow win : windows(dem)) {
-                            ShadowMask part = a.computeWindow(dem, l, o, pool, win);
+                            ShadowMask part = a.computeWindow(dem, l, o, POOL.get(), win);
                             assertEquals(win.width(), part.width());
                             assertEquals(win.height(), part.height());
                             int differ = 0;
@@ -170,7 +166,7 @@ class ShadowInvarianceTest {
                     CellWindow halo = ShadowHalo.window(dem, l, ShadowOptions.DEFAULTS, win);
                     assertTrue(halo.col() <= win.col() && halo.colEnd() >= win.colEnd() && halo.row() <= win.row()
                             && halo.rowEnd() >= win.rowEnd(), "the halo contains the window");
-                    float[] ref = a.computeWindow(dem, l, ShadowOptions.DEFAULTS, pool, win).backingArray();
+                    float[] ref = a.computeWindow(dem, l, ShadowOptions.DEFAULTS, POOL.get(), win).backingArray();
                     float[] v = dem.backingArray().clone();
                     int removed = 0;
                     for (int r = 0; r < dem.height(); r++) {
@@ -182,7 +178,7 @@ class ShadowInvarianceTest {
                         }
                     }
                     Dem masked = new Dem(v, dem.geometry());
-                    float[] m = a.computeWindow(masked, l, ShadowOptions.DEFAULTS, pool, win).backingArray();
+                    float[] m = a.computeWindow(masked, l, ShadowOptions.DEFAULTS, POOL.get(), win).backingArray();
                     assertArrayEquals(ref, m, a + " " + l + " " + win + ": no-data outside the halo (" + removed
                             + " cells)");
                 }

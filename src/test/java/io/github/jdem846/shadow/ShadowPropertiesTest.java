@@ -7,13 +7,13 @@ import io.github.jdem846.io.DemReader;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.testing.PoolExtension;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.ForkJoinPool;
-import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
@@ -29,23 +29,18 @@ import org.junit.jupiter.params.provider.MethodSource;
 class ShadowPropertiesTest {
 
     private static final double[] OFF_AXIS = {160, 250, 300};
-    private static ForkJoinPool pool;
+    @RegisterExtension
+    static final PoolExtension POOL = new PoolExtension(2);
     private static Dem real;
     private static Dem synthetic;
 
     @BeforeAll
     static void start() throws IOException {
-        pool = new ForkJoinPool(2);
         Dem bt = DemReader.read(Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.tif"));
         // 160×120 cells of the steepest part (the window of testdata/variants), 614–2095 m
         Dem crop = bt.crop(520, 180, 160, 120);
         real = new Dem(crop.backingArray().clone(), GridGeometry.metric(160, 120, 30));
         synthetic = ShadowTestDems.rough(64, 48, 30, 11, 800);
-    }
-
-    @AfterAll
-    static void stop() {
-        pool.shutdownNow();
     }
 
     /**
@@ -69,7 +64,7 @@ class ShadowPropertiesTest {
 
     record Variant(String name, ShadowAlgorithm algorithm, ShadowOptions options) {
         ShadowMask run(Dem dem, double azimuth, double elevation) {
-            return algorithm.compute(dem, new LightDirection(azimuth, elevation), options, pool);
+            return algorithm.compute(dem, new LightDirection(azimuth, elevation), options, POOL.get());
         }
 
         @Override
@@ -182,10 +177,10 @@ class ShadowPropertiesTest {
                         continue;
                     }
                     LightDirection l = new LightDirection(az, e);
-                    float[] m = v.algorithm().compute(dem, l, o, pool).backingArray();
-                    assertEquals(0, differences(m, v.algorithm().compute(raised, l, o, pool).backingArray()),
+                    float[] m = v.algorithm().compute(dem, l, o, POOL.get()).backingArray();
+                    assertEquals(0, differences(m, v.algorithm().compute(raised, l, o, POOL.get()).backingArray()),
                             v + " soft=" + soft + " az=" + az + " e=" + e + ": +1024 m");
-                    assertEquals(0, differences(m, v.algorithm().compute(lowered, l, o, pool).backingArray()),
+                    assertEquals(0, differences(m, v.algorithm().compute(lowered, l, o, POOL.get()).backingArray()),
                             v + " soft=" + soft + " az=" + az + " e=" + e + ": −4096 m");
                 }
             }
@@ -348,7 +343,7 @@ class ShadowPropertiesTest {
             for (double az : OFF_AXIS) {
                 double spread = half * (Math.abs(Math.sin(Math.toRadians(az)))
                         + Math.abs(Math.cos(Math.toRadians(az))));
-                ShadowMask m = a.compute(dem, new LightDirection(az, 10), ShadowOptions.DEFAULTS, pool);
+                ShadowMask m = a.compute(dem, new LightDirection(az, 10), ShadowOptions.DEFAULTS, POOL.get());
                 double longest = shadowLength(m, 100, 3, cell, az, spread + 2 * cell, a + " az=" + az);
                 double error = (longest - spread - 400 / Math.tan(Math.toRadians(10))) / cell;
                 assertTrue(error <= 0.5 && error >= (a == ShadowAlgorithm.SWEEP ? -3 : -Math.sqrt(2)),

@@ -7,12 +7,11 @@ import static org.junit.jupiter.api.Assertions.fail;
 
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.testing.PoolExtension;
 import java.time.Duration;
 import java.util.LinkedHashMap;
 import java.util.Map;
-import java.util.concurrent.ForkJoinPool;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -25,17 +24,8 @@ class ShadowStabilityTest {
     static final double[] ELEVATIONS = {-5, 0, 1e-6, 0.01, 2, 45, 89.99, 90};
     static final double[] AZIMUTHS = {-720, -0.0, 0, 1e-12, 45, 90, 179.9, 180, 250, 270, 359.999, 360, 1e6};
 
-    private static ForkJoinPool pool;
-
-    @BeforeAll
-    static void start() {
-        pool = new ForkJoinPool(2);
-    }
-
-    @AfterAll
-    static void stop() {
-        pool.shutdownNow();
-    }
+    @RegisterExtension
+    static final PoolExtension POOL = new PoolExtension(2);
 
     static Map<String, Dem> dems() {
         Map<String, Dem> m = new LinkedHashMap<>();
@@ -83,7 +73,7 @@ class ShadowStabilityTest {
                         for (double az : AZIMUTHS) {
                             String what = algorithm + " " + entry.getKey() + " e=" + e + " az=" + az + " soft="
                                     + soft;
-                            ShadowMask m = algorithm.compute(dem, new LightDirection(az, e), opt, pool);
+                            ShadowMask m = algorithm.compute(dem, new LightDirection(az, e), opt, POOL.get());
                             check(dem, m, e, what);
                         }
                     }
@@ -119,9 +109,9 @@ class ShadowStabilityTest {
             for (double az : AZIMUTHS) {
                 LightDirection l = new LightDirection(az, e);
                 assertEquals(0, algorithm.compute(ShadowTestDems.flat(9, 7, 30, 100f), l, ShadowOptions.DEFAULTS,
-                        pool).shadowedCount(), algorithm + " flat e=" + e + " az=" + az);
+                        POOL.get()).shadowedCount(), algorithm + " flat e=" + e + " az=" + az);
                 assertEquals(0, algorithm.compute(ShadowTestDems.metric(1, 1, 30, new float[] {5f}), l,
-                        ShadowOptions.DEFAULTS, pool).shadowedCount(), algorithm + " 1x1");
+                        ShadowOptions.DEFAULTS, POOL.get()).shadowedCount(), algorithm + " 1x1");
             }
         }
     }
@@ -132,8 +122,8 @@ class ShadowStabilityTest {
         // west half at 0, east half at 10 000 m, 0.5 m cells; sun in the east at 45°: the whole low half is in
         // shadow (the cliff is 20 000 times higher than the 3 m of low ground); sun in the west: all lit
         Dem cliff = dems().get("10 km cliff, 0.5 m cells");
-        ShadowMask east = algorithm.compute(cliff, new LightDirection(90, 45), ShadowOptions.DEFAULTS, pool);
-        ShadowMask west = algorithm.compute(cliff, new LightDirection(270, 45), ShadowOptions.DEFAULTS, pool);
+        ShadowMask east = algorithm.compute(cliff, new LightDirection(90, 45), ShadowOptions.DEFAULTS, POOL.get());
+        ShadowMask west = algorithm.compute(cliff, new LightDirection(270, 45), ShadowOptions.DEFAULTS, POOL.get());
         for (int r = 0; r < 12; r++) {
             for (int c = 0; c < 12; c++) {
                 assertEquals(c < 6 ? 1f : 0f, east.get(c, r), algorithm + " east sun (" + c + ", " + r + ")");
@@ -157,7 +147,7 @@ class ShadowStabilityTest {
         Dem dem = ShadowTestDems.geographic(w, h, 10, 78.03, 0.01, v);
         double cellM = dem.geometry().cellWidthMeters(3);
         double expected = 500 / Math.tan(Math.toRadians(5)) / cellM;
-        ShadowMask m = algorithm.compute(dem, new LightDirection(270, 5), ShadowOptions.DEFAULTS, pool);
+        ShadowMask m = algorithm.compute(dem, new LightDirection(270, 5), ShadowOptions.DEFAULTS, POOL.get());
         int last = 5;
         for (int c = 6; c < w; c++) {
             if (m.get(c, 3) >= 0.5f) {
@@ -181,7 +171,7 @@ class ShadowStabilityTest {
             ShadowOptions opt = ShadowOptions.DEFAULTS.withSoftShadows(soft);
             for (double e : new double[] {1e-6, 0.01, 2, 45, 89.99}) {
                 for (double az : AZIMUTHS) {
-                    ShadowMask m = algorithm.compute(spike, new LightDirection(az, e), opt, pool);
+                    ShadowMask m = algorithm.compute(spike, new LightDirection(az, e), opt, POOL.get());
                     double a = Math.toRadians(LightDirection.normalizeAzimuth(az));
                     double lowerLimb = e - (soft ? 0.265 : 0);
                     double reach = lowerLimb > 0 ? 500 / Math.tan(Math.toRadians(lowerLimb)) + 60
@@ -229,7 +219,7 @@ class ShadowStabilityTest {
             }
             Dem dem = ShadowTestDems.metric(w, h, 30, v);
             ShadowMask m = algorithm.compute(dem, new LightDirection(mirrored ? 270 : 90, 45),
-                    ShadowOptions.DEFAULTS, pool);
+                    ShadowOptions.DEFAULTS, POOL.get());
             for (int r = 0; r < h; r++) {
                 for (int c = 0; c < w; c++) {
                     int x = mirrored ? w - 1 - c : c;
@@ -251,7 +241,7 @@ class ShadowStabilityTest {
                 for (double az : AZIMUTHS) {
                     for (boolean soft : new boolean[] {false, true}) {
                         ShadowMask m = algorithm.compute(dem, new LightDirection(az, e),
-                                ShadowOptions.DEFAULTS.withSoftShadows(soft), pool);
+                                ShadowOptions.DEFAULTS.withSoftShadows(soft), POOL.get());
                         float max = 0;
                         for (float x : m.backingArray()) {
                             max = Math.max(max, x);

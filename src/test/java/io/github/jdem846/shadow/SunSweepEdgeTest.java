@@ -7,14 +7,13 @@ import io.github.jdem846.io.DemReader;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.testing.PoolExtension;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ForkJoinPool;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * The sweep at the grid's outer edges, against rays worked out by hand and against the marches: a ray that has left
@@ -26,17 +25,8 @@ class SunSweepEdgeTest {
     private static final double[] AZIMUTHS = {20, 45, 135, 160, 250, 300};
     private static final double[] ELEVATIONS = {5, 20};
 
-    private static ForkJoinPool pool;
-
-    @BeforeAll
-    static void start() {
-        pool = new ForkJoinPool(2);
-    }
-
-    @AfterAll
-    static void stop() {
-        pool.shutdownNow();
-    }
+    @RegisterExtension
+    static final PoolExtension POOL = new PoolExtension(2);
 
     /**
      * Flat ground at 0 with 600 m spikes on the four edge rows/columns. Off the open squares of side 2 around the
@@ -61,9 +51,9 @@ class SunSweepEdgeTest {
         for (double e : ELEVATIONS) {
             for (double a : AZIMUTHS) {
                 LightDirection light = new LightDirection(a, e);
-                float[] sweep = ShadowAlgorithm.SWEEP.compute(dem, light, ShadowOptions.DEFAULTS, pool)
+                float[] sweep = ShadowAlgorithm.SWEEP.compute(dem, light, ShadowOptions.DEFAULTS, POOL.get())
                         .backingArray();
-                float[] exact = ShadowAlgorithm.EXACT.compute(dem, light, ShadowOptions.DEFAULTS, pool)
+                float[] exact = ShadowAlgorithm.EXACT.compute(dem, light, ShadowOptions.DEFAULTS, POOL.get())
                         .backingArray();
                 double ux = Math.sin(Math.toRadians(a));
                 double uy = -Math.cos(Math.toRadians(a));
@@ -143,11 +133,11 @@ class SunSweepEdgeTest {
             for (double e : ELEVATIONS) {
                 for (double a : AZIMUTHS) {
                     LightDirection light = new LightDirection(a, e);
-                    float[] sweep = ShadowAlgorithm.SWEEP.compute(dem, light, ShadowOptions.DEFAULTS, pool)
+                    float[] sweep = ShadowAlgorithm.SWEEP.compute(dem, light, ShadowOptions.DEFAULTS, POOL.get())
                             .backingArray();
-                    float[] exact = ShadowAlgorithm.EXACT.compute(dem, light, ShadowOptions.DEFAULTS, pool)
+                    float[] exact = ShadowAlgorithm.EXACT.compute(dem, light, ShadowOptions.DEFAULTS, POOL.get())
                             .backingArray();
-                    float[] march = ShadowAlgorithm.MARCH.compute(dem, light, quarter, pool).backingArray();
+                    float[] march = ShadowAlgorithm.MARCH.compute(dem, light, quarter, POOL.get()).backingArray();
                     for (int r = 0; r < h; r++) {
                         for (int c = 0; c < w; c++) {
                             int i = r * w + c;
