@@ -10,7 +10,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * start interpreted on the full grid: docs/performance.md, "Whole commands vs gdaldem"). The warm-up stops at
  * {@link #stop()} or after its budget, whichever comes first; any failure is ignored.
  */
-final class KernelWarmUp implements AutoCloseable {
+final class KernelWarmUp {
 
     /** Edge of the synthetic DEM: a few tiles' worth of cells per round. */
     private static final int SIZE = 128;
@@ -42,11 +42,6 @@ final class KernelWarmUp implements AutoCloseable {
         stopped.set(true);
     }
 
-    @Override
-    public void close() {
-        stop();
-    }
-
     private void run(Stage stage) {
         Dem dem = syntheticHills();
         long start = System.nanoTime();
@@ -65,7 +60,8 @@ final class KernelWarmUp implements AutoCloseable {
         float[] v = new float[SIZE * SIZE];
         for (int r = 0; r < SIZE; r++) {
             for (int c = 0; c < SIZE; c++) {
-                v[r * SIZE + c] = (float) (500 + 120 * Math.sin(c * 0.11) * Math.cos(r * 0.07) + 40 * Math.sin((c + r) * 0.23));
+                v[r * SIZE + c] = (float) (500 + 120 * Math.sin(c * 0.11) * Math.cos(r * 0.07)
+                        + 40 * Math.sin((c + r) * 0.23));
             }
         }
         return new Dem(v, GridGeometry.metric(SIZE, SIZE, 30));
