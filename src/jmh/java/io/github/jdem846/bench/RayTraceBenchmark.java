@@ -52,14 +52,11 @@ public class RayTraceBenchmark {
         };
     }
 
-    /** A DEM of {@code size}², the sun and a one-thread pool. */
+    /** A DEM, the sun and a one-thread pool; the grid's size is the subclass's. */
     @State(Scope.Benchmark)
-    public static class Grid {
+    public abstract static class SunOverDem {
         @Param({"fractal"})
         public String dem;
-
-        @Param({"512", "2048"})
-        public int size;
 
         @Param({"2", "5", "20", "45"})
         public double elevation;
@@ -68,9 +65,11 @@ public class RayTraceBenchmark {
         LightDirection light;
         ForkJoinPool pool;
 
+        abstract int gridSize();
+
         @Setup(Level.Trial)
         public void setUp() throws IOException {
-            grid = dem(dem, size);
+            grid = dem(dem, gridSize());
             light = new LightDirection(AZIMUTH, elevation);
             pool = new ForkJoinPool(1);
         }
@@ -81,29 +80,24 @@ public class RayTraceBenchmark {
         }
     }
 
-    /** {@link Grid} at 512² only, for the slow reference. */
+    /** {@link SunOverDem} at 512² and 2048². */
     @State(Scope.Benchmark)
-    public static class SmallGrid {
-        @Param({"fractal"})
-        public String dem;
+    public static class Grid extends SunOverDem {
+        @Param({"512", "2048"})
+        public int size;
 
-        @Param({"2", "5", "20", "45"})
-        public double elevation;
-
-        Dem grid;
-        LightDirection light;
-        ForkJoinPool pool;
-
-        @Setup(Level.Trial)
-        public void setUp() throws IOException {
-            grid = dem(dem, 512);
-            light = new LightDirection(AZIMUTH, elevation);
-            pool = new ForkJoinPool(1);
+        @Override
+        int gridSize() {
+            return size;
         }
+    }
 
-        @TearDown(Level.Trial)
-        public void tearDown() {
-            pool.shutdownNow();
+    /** {@link SunOverDem} at 512² only, for the slow reference. */
+    @State(Scope.Benchmark)
+    public static class SmallGrid extends SunOverDem {
+        @Override
+        int gridSize() {
+            return 512;
         }
     }
 
