@@ -31,10 +31,12 @@ record ValueScale(double scale, double offset) {
 
     /**
      * The scale and offset of band 1 (sample 0) in the XML of a GDAL_METADATA tag, or {@link #IDENTITY} when the
-     * text names neither. A value that is not a finite number, or a scale of 0, is ignored with a notice.
+     * text names neither. A value that is not a finite number, or a scale of 0, is ignored with a notice. Text
+     * that does not contain the words "scale" or "offset" is not parsed at all (GDAL writes this tag for
+     * statistics and other items too, and an XML parser costs ~50 ms to load on a cold JVM).
      */
     static ValueScale fromGdalMetadata(String xml, List<String> notices) {
-        if (xml == null || xml.isBlank()) {
+        if (xml == null || !mentionsScaleOrOffset(xml)) {
             return IDENTITY;
         }
         double scale = 1;
@@ -77,6 +79,11 @@ record ValueScale(double scale, double offset) {
                     + " (the file's GDAL scale and offset; no-data applies to the raw values)");
         }
         return s;
+    }
+
+    private static boolean mentionsScaleOrOffset(String xml) {
+        String lower = xml.toLowerCase(Locale.ROOT);
+        return lower.contains("scale") || lower.contains("offset");
     }
 
     private static String fmt(double v) {

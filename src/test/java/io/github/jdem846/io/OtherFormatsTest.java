@@ -107,6 +107,9 @@ class OtherFormatsTest {
                 + "0</Item><Item name=\"OFFSET\" sample=\"0\" role=\"offset\">x</Item></GDALMetadata>", notices);
         assertTrue(s.isIdentity());
         assertEquals(2, notices.size(), notices.toString());
+        // Broken XML is reported when it could hold a scale or an offset, and not parsed at all otherwise.
+        assertTrue(ValueScale.fromGdalMetadata("<not xml role=\"scale\"", notices).isIdentity());
+        assertEquals(3, notices.size(), notices.toString());
         assertTrue(ValueScale.fromGdalMetadata("<not xml", notices).isIdentity());
         assertEquals(3, notices.size(), notices.toString());
     }
