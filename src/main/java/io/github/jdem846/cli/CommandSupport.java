@@ -52,11 +52,22 @@ final class CommandSupport {
      */
     static DemLoader.Halo shadowHalo(SunOptions sun, Body body, double zFactor, ShadowOptions options,
                                      PrintWriter err) {
-        return (file, info, window) -> {
+        return (statistics, info, window) -> {
             LightDirection light = sun.byTime()
                     ? sun.light(info.geometry(), body, 0, new PrintWriter(java.io.Writer.nullWriter())).field().central()
                     : sun.fixedLight();
-            return DemLoader.Halo.shadows(light.forHeightsScaledBy(zFactor), options).cells(file, info, window);
+            return DemLoader.Halo.shadows(light.forHeightsScaledBy(zFactor), options).cells(statistics, info,
+                    window);
         };
+    }
+
+    /**
+     * The shadow options for a grid loaded as a window of its file: with the file's lowest elevation, so that the
+     * sweep's mask equals the same window of the whole file's ({@link ShadowOptions#terrainMinimum()}); unchanged
+     * when the file's statistics were not streamed (no window).
+     */
+    static ShadowOptions forLoadedGrid(ShadowOptions options, DemLoader.Loaded loaded) {
+        return loaded.fileStatistics() == null ? options
+                : options.withTerrainMinimum(loaded.fileStatistics().min());
     }
 }

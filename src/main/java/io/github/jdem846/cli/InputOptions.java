@@ -65,6 +65,11 @@ public final class InputOptions {
         return OutputSize.FULL;
     }
 
+    /** True when {@code --window} was given. */
+    boolean hasWindow() {
+        return window != null;
+    }
+
     /** The window, or {@code null} for the whole grid. */
     Window window() {
         if (window == null) {

@@ -85,8 +85,11 @@ public final class RenderCommand implements Callable<Integer> {
         Scene warmUpScene = scene.withLight(new LightDirection(320, 25));
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem,
                 warmUpScene));
-        DemLoader.Loaded loaded = input.load(halo, scene.tint() != null);
+        DemLoader.Loaded loaded = input.load(halo, scene.tint() != null || scene.hasShadows() && input.hasWindow());
         warmUp.stop();
+        if (scene.hasShadows()) {
+            scene = scene.withShadowOptions(CommandSupport.forLoadedGrid(scene.shadowOptions(), loaded));
+        }
         times.lap("read");
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);

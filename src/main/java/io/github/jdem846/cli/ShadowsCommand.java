@@ -63,8 +63,9 @@ public final class ShadowsCommand implements Callable<Integer> {
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).shadows(dem,
                 warmUpScene, RenderProgress.NONE));
         DemLoader.Loaded loaded = input.load(
-                CommandSupport.shadowHalo(sun, input.body(), 1, scene.shadowOptions(), err), false);
+                CommandSupport.shadowHalo(sun, input.body(), 1, scene.shadowOptions(), err), input.hasWindow());
         warmUp.stop();
+        scene = scene.withShadowOptions(CommandSupport.forLoadedGrid(scene.shadowOptions(), loaded));
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
         float[] mask;

@@ -21,24 +21,31 @@ import java.util.Objects;
  */
 public final class DemLoader {
 
+    /** The elevation statistics of a whole file, streamed on the first call and kept for the others. */
+    @FunctionalInterface
+    public interface FileStatistics {
+        /** Min, max and valid count of the whole file at full resolution. */
+        ElevationStatistics get() throws IOException;
+    }
+
     /** Cells of halo a stage needs around the output window, in DEM cells. */
     @FunctionalInterface
     public interface Halo {
         /**
          * The halo in source cells on each side: {west, north, east, south}.
          *
-         * @param file   the file being read (e.g. to stream its statistics)
-         * @param info   the file's header
-         * @param window the cells of the output window
+         * @param statistics the whole file's elevation statistics, streamed only if asked for (once per load)
+         * @param info       the file's header
+         * @param window     the cells of the output window
          */
-        int[] cells(Path file, DemInfo info, Window.Cells window) throws IOException;
+        int[] cells(FileStatistics statistics, DemInfo info, Window.Cells window) throws IOException;
 
         /** No halo. */
-        Halo NONE = (file, info, window) -> new int[4];
+        Halo NONE = (statistics, info, window) -> new int[4];
 
         /** The same number of cells on every side. */
         static Halo uniform(int cells) {
-            return (file, info, window) -> new int[] {cells, cells, cells, cells};
+            return (statistics, info, window) -> new int[] {cells, cells, cells, cells};
         }
 
         /**
@@ -52,9 +59,9 @@ public final class DemLoader {
 
         /** The larger of this halo and {@code other} on each side. */
         default Halo union(Halo other) {
-            return (file, info, window) -> {
-                int[] a = cells(file, info, window);
-                int[] b = other.cells(file, info, window);
+            return (statistics, info, window) -> {
+                int[] a = cells(statistics, info, window);
+                int[] b = other.cells(statistics, info, window);
                 return new int[] {Math.max(a[0], b[0]), Math.max(a[1], b[1]), Math.max(a[2], b[2]),
                     Math.max(a[3], b[3])};
             };
@@ -122,7 +129,8 @@ public final class DemLoader {
         int[] px = size.pixelsFor(win.width(), win.height());
         double fx = (double) win.width() / px[0];
         double fy = (double) win.height() / px[1];
-        int[] h = halo.cells(file, info, win);
+        StreamedStatistics streamed = new StreamedStatistics(file);
+        int[] h = halo.cells(streamed, info, win);
         // Halo in source cells, rounded up to whole output pixels so the window keeps pixel-aligned edges.
         int west = haloCells(h[0], fx, win.col());
         int north = haloCells(h[1], fy, win.row());
@@ -145,9 +153,27 @@ public final class DemLoader {
         if (fileStatistics) {
             boolean whole = read.width() == info.width() && read.height() == info.height()
                     && dem.width() == info.width() && dem.height() == info.height();
-            stats = whole ? dem.statistics() : DemReader.statistics(file);
+            stats = whole ? dem.statistics() : streamed.get();
         }
         return new Loaded(loaded.info().withDefaultEllipsoid(body), dem, col, row, w, hgt, stats);
+    }
+
+    /** {@link FileStatistics} of one file: streamed at most once. */
+    private static final class StreamedStatistics implements FileStatistics {
+        private final Path file;
+        private ElevationStatistics statistics;
+
+        StreamedStatistics(Path file) {
+            this.file = file;
+        }
+
+        @Override
+        public ElevationStatistics get() throws IOException {
+            if (statistics == null) {
+                statistics = DemReader.statistics(file);
+            }
+            return statistics;
+        }
     }
 
     /** Halo cells on one side: whole output pixels' worth, at most what the grid has on that side. */

@@ -121,4 +121,13 @@ final class RayFrame {
         }
         return m;
     }
+
+    /** Largest metric length of a major step over all rows. */
+    double maxMetresPerStep() {
+        double m = 0;
+        for (double v : metresPerStep) {
+            m = Math.max(m, v);
+        }
+        return m;
+    }
 }

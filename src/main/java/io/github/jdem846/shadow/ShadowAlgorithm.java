@@ -109,10 +109,11 @@ public enum ShadowAlgorithm {
                                   CellWindow window, float[] out) {
         RayFrame frame = new RayFrame(dem, light, options);
         boolean bilinear = options.sampling() != Sampling.NEAREST;
-        double relief = dem.statistics().max() - dem.statistics().min();
+        SunSweep sweep = new SunSweep(dem, frame, bilinear, bilinear && options.firstCellTest(), true,
+                options.terrainMinimum());
         int halo = window.width() == dem.width() && window.height() == dem.height() ? Integer.MAX_VALUE
-                : ShadowHalo.sweepSteps(frame, ShadowHalo.tileMin(dem, window), relief, light, options);
-        new SunSweep(dem, frame, bilinear, bilinear && options.firstCellTest()).run(window, halo, out, pool);
+                : ShadowHalo.sweepSteps(frame, sweep.lowestFloor(), light, options);
+        sweep.run(window, halo, out, pool);
     }
 
     /**

@@ -8,12 +8,18 @@ import io.github.jdem846.raster.GridGeometry;
  * How much terrain beyond a tile can shade it. A ray leaving a cell of elevation ≥ {@code tileMin} rises above the
  * highest terrain {@code zMax} after (zMax − tileMin)/tan(elevation) metres toward the sun (the lower limb's
  * elevation for soft shadows), so a tile needs only that upstream halo, plus two cells all round for the bilinear
- * surface and the sweep's neighbouring lines. Curvature only lowers distant terrain, so the same halo is enough.
+ * surface and the sweep's neighbouring lines, and {@link #FLOOR_STEPS} steps more for the sweep's floor. Curvature
+ * only lowers distant terrain, so the same halo is enough.
  */
 public final class ShadowHalo {
 
     /** Extra cells on every side for bilinear sampling and the sweep's neighbouring lines. */
     static final int MARGIN = 2;
+    /**
+     * The sweep ignores line heights more than this many steps' drop below the lowest terrain ({@link SunSweep}), so
+     * its reach toward the sun is this many steps longer than a ray's.
+     */
+    static final int FLOOR_STEPS = 3;
 
     private ShadowHalo() {
     }
@@ -56,7 +62,7 @@ public final class ShadowHalo {
         int south = MARGIN;
         if (dist > 0) {
             RayFrame frame = new RayFrame(geometry, zMax, light, options);
-            double steps = dist / frame.minMetresPerStep();
+            double steps = (dist + FLOOR_STEPS * frame.maxMetresPerStep()) / frame.minMetresPerStep();
             int dc = cells(Math.abs(frame.ux) * steps);
             int dr = cells(Math.abs(frame.uy) * steps);
             if (frame.ux > 0) {
@@ -99,15 +105,12 @@ public final class ShadowHalo {
     }
 
     /**
-     * Halo length in major steps for the sweep (Integer.MAX_VALUE / 2 when unbounded): the physical halo lengthened
-     * by {@code relief}/tan(elevation), so that every line height the sweep leaves out is below the level below
-     * which it ignores a line (see {@link SunSweep}); the window then equals the same cells of the whole grid.
-     *
-     * @param relief zMax − zMin of the whole DEM
+     * Halo length in major steps for the sweep (Integer.MAX_VALUE / 2 when unbounded): as far as terrain could still
+     * raise a line above {@code floor}, the lowest height the sweep uses ({@link SunSweep#lowestFloor()}); the window
+     * then equals the same cells of the whole grid.
      */
-    static int sweepSteps(RayFrame frame, double tileMin, double relief, LightDirection light,
-                          ShadowOptions options) {
-        double dist = distanceMeters(frame.zMax, tileMin - relief, light, options);
+    static int sweepSteps(RayFrame frame, double floor, LightDirection light, ShadowOptions options) {
+        double dist = distanceMeters(frame.zMax, floor, light, options);
         return cells(dist / frame.minMetresPerStep() + MARGIN);
     }
 

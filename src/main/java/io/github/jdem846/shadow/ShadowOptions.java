@@ -18,10 +18,14 @@ import java.util.Objects;
  * @param earthCurvature        lower distant terrain by (1 − k)·d²/(2R) (curvature less refraction)
  * @param refractionCoefficient k, 0.13 by default
  * @param earthRadiusMeters     R; NaN = the mean radius of the grid's ellipsoid
+ * @param terrainMinimum        {@code sweep} only: the lowest elevation of the whole file the grid was read from;
+ *                              NaN = the grid's own. A grid read as a window of a file, with the halo of {@link
+ *                              ShadowHalo#window}, gives exactly the whole file's mask in that window when this is
+ *                              the file's minimum (the sweep ignores line heights below it, see {@code SunSweep})
  */
 public record ShadowOptions(StepSize step, Sampling sampling, boolean firstCellTest, boolean softShadows,
                             double sunDiameterDegrees, boolean earthCurvature, double refractionCoefficient,
-                            double earthRadiusMeters) {
+                            double earthRadiusMeters, double terrainMinimum) {
 
     /** Apparent diameter of the sun, degrees. */
     public static final double SUN_DIAMETER_DEGREES = 0.53;
@@ -30,7 +34,7 @@ public record ShadowOptions(StepSize step, Sampling sampling, boolean firstCellT
 
     /** Hard shadows, article step, automatic sampling, first-cell test on, no curvature. */
     public static final ShadowOptions DEFAULTS = new ShadowOptions(StepSize.ARTICLE, Sampling.AUTO, true, false,
-            SUN_DIAMETER_DEGREES, false, REFRACTION_COEFFICIENT, Double.NaN);
+            SUN_DIAMETER_DEGREES, false, REFRACTION_COEFFICIENT, Double.NaN, Double.NaN);
 
     public ShadowOptions {
         Objects.requireNonNull(step, "step");
@@ -47,42 +51,55 @@ public record ShadowOptions(StepSize step, Sampling sampling, boolean firstCellT
             throw new IllegalArgumentException("planet radius must be a positive number of metres (or unset to use"
                     + " the grid's ellipsoid), got " + earthRadiusMeters);
         }
+        if (Double.isInfinite(terrainMinimum)) {
+            throw new IllegalArgumentException("terrain minimum must be a finite elevation (or NaN for the grid's"
+                    + " own), got " + terrainMinimum);
+        }
     }
 
     public ShadowOptions withStep(StepSize s) {
         return new ShadowOptions(s, sampling, firstCellTest, softShadows, sunDiameterDegrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters);
+                refractionCoefficient, earthRadiusMeters, terrainMinimum);
     }
 
     public ShadowOptions withSampling(Sampling s) {
         return new ShadowOptions(step, s, firstCellTest, softShadows, sunDiameterDegrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters);
+                refractionCoefficient, earthRadiusMeters, terrainMinimum);
     }
 
     public ShadowOptions withFirstCellTest(boolean on) {
         return new ShadowOptions(step, sampling, on, softShadows, sunDiameterDegrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters);
+                refractionCoefficient, earthRadiusMeters, terrainMinimum);
     }
 
     /** Soft shadows from a sun disk of {@link #sunDiameterDegrees()}. */
     public ShadowOptions withSoftShadows(boolean on) {
         return new ShadowOptions(step, sampling, firstCellTest, on, sunDiameterDegrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters);
+                refractionCoefficient, earthRadiusMeters, terrainMinimum);
     }
 
     public ShadowOptions withSunDiameter(double degrees) {
         return new ShadowOptions(step, sampling, firstCellTest, softShadows, degrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters);
+                refractionCoefficient, earthRadiusMeters, terrainMinimum);
     }
 
     /** Curvature and refraction on or off, with the given k and radius (NaN = the grid's ellipsoid). */
     public ShadowOptions withEarthCurvature(boolean on, double k, double radiusMeters) {
         return new ShadowOptions(step, sampling, firstCellTest, softShadows, sunDiameterDegrees, on, k,
-                radiusMeters);
+                radiusMeters, terrainMinimum);
     }
 
     /** Curvature and refraction on or off with k = 0.13 and the grid's ellipsoid. */
     public ShadowOptions withEarthCurvature(boolean on) {
         return withEarthCurvature(on, REFRACTION_COEFFICIENT, Double.NaN);
+    }
+
+    /**
+     * The lowest elevation of the whole file a windowed grid was read from ({@link #terrainMinimum()}); NaN = the
+     * grid's own.
+     */
+    public ShadowOptions withTerrainMinimum(double z) {
+        return new ShadowOptions(step, sampling, firstCellTest, softShadows, sunDiameterDegrees, earthCurvature,
+                refractionCoefficient, earthRadiusMeters, z);
     }
 }

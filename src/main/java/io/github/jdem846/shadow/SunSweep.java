@@ -14,10 +14,13 @@ import java.util.concurrent.RecursiveAction;
  * re-interpolated from line to line, so nothing smears sideways). A cell lies between two adjacent lines; its shadow
  * height from two cells upstream on is interpolated between theirs, and the first cell of its own ray is tested
  * directly on the bilinear surface in eighth-cell steps, as {@code exact} does, where a steep slope shades itself.
- * A line whose shadow height is below z0 − (zMax − zMin) (no terrain, or only terrain that could never shade the
- * cell) counts as no terrain and the other line decides alone. That rule makes the result depend only on terrain
- * within (2·zMax − zMin − z0)/tan(elevation) of the cell, so a window computed with that halo ({@link
- * ShadowHalo#sweepSteps}) equals the same cells of the whole grid; interpolating toward a far, low line would not.
+ * A line whose shadow height is below a floor, the lowest terrain less {@link ShadowHalo#FLOOR_STEPS} steps' drop
+ * (no terrain, or only terrain so far away that it could shade nothing), counts as no terrain and the other line
+ * decides alone; a line with valid terrain two steps upstream is always above the floor. That rule makes the result
+ * depend only on terrain within (zMax − zMin)/tan(elevation) + {@link ShadowHalo#FLOOR_STEPS} steps of the cell,
+ * so a window computed with that halo ({@link ShadowHalo#sweepSteps}, {@link ShadowHalo#window}) equals the same
+ * cells of the whole grid; interpolating toward a far, low line would not. For a grid read as a window of a file,
+ * zMin is the file's ({@link ShadowOptions#terrainMinimum()}), so that the floor is the whole file's.
  *
  * <p>Edges (bilinear sampling): terrain ends at the outer cell edges of the file's grid, as for a marched ray (test
  * 2). On the side through which rays leave, line samples beyond the outer edge are no terrain, and a cell whose own
@@ -61,8 +64,11 @@ final class SunSweep {
     private final int strideJ;
     /** Metres of one major step when it is the same on every row (projected grids), else NaN. */
     private final double uniformStep;
-    /** zMax − zMin of the whole DEM: a line whose shadow height is lower than z0 − relief counts as no terrain. */
-    private final double relief;
+    /** Per row: a line whose shadow height is below this counts as no terrain (see the class comment). */
+    private final double[] floorOfRow;
+    /** The floor of every row when the step is the same on all rows (NaN otherwise), and the lowest floor. */
+    private final double uniformFloor;
+    private final double lowestFloor;
 
     /**
      * The last minor cell the lines read, min(nMin − 1, the root grid's last one in this frame). Rays leave the grid
@@ -92,6 +98,15 @@ final class SunSweep {
     }
 
     SunSweep(Dem dem, RayFrame frame, boolean bilinear, boolean firstCellTest, boolean lockstepAllowed) {
+        this(dem, frame, bilinear, firstCellTest, lockstepAllowed, Double.NaN);
+    }
+
+    /**
+     * @param terrainMinimum the lowest elevation of the file {@code dem} was read from (NaN = the grid's own): the
+     *                       floor below which a line counts as no terrain starts there
+     */
+    SunSweep(Dem dem, RayFrame frame, boolean bilinear, boolean firstCellTest, boolean lockstepAllowed,
+             double terrainMinimum) {
         if (frame.soft()) {
             throw new IllegalArgumentException("the sweep traces hard shadows; soft shadows are built from hard sweeps"
                     + " at angles across the sun's disk (ShadowAlgorithm)");
@@ -101,7 +116,15 @@ final class SunSweep {
         this.f = frame;
         this.bilinear = bilinear;
         this.firstCellTest = firstCellTest;
-        this.relief = dem.statistics().max() - dem.statistics().min();
+        double own = dem.statistics().min();
+        double lowest = Double.isNaN(terrainMinimum) ? own : Math.min(terrainMinimum, own);
+        this.floorOfRow = new double[frame.metresPerStep.length];
+        double lowestF = Double.POSITIVE_INFINITY;
+        for (int r = 0; r < floorOfRow.length; r++) {
+            floorOfRow[r] = lowest - ShadowHalo.FLOOR_STEPS * frame.metresPerStep[r] * frame.tanElevation;
+            lowestF = Math.min(lowestF, floorOfRow[r]);
+        }
+        this.lowestFloor = floorOfRow.length > 0 ? lowestF : lowest;
         int w = dem.width();
         int h = dem.height();
         this.gridW = w;
@@ -169,6 +192,12 @@ final class SunSweep {
             same &= d == first;
         }
         uniformStep = same ? first : Double.NaN;
+        uniformFloor = same ? floorOfRow[0] : Double.NaN;
+    }
+
+    /** The lowest floor of all rows: no line height below it is ever used (see the class comment). */
+    double lowestFloor() {
+        return lowestFloor;
     }
 
     private int idx(int i, int j) {
@@ -624,7 +653,7 @@ final class SunSweep {
                     result = 0f;
                 } else {
                     boolean shadow = j >= jTraced ? rayBlockedToEdge(i, j, z0)
-                            : between(h[q], h[q + 1], phi, z0 - relief) > z0;
+                            : between(h[q], h[q + 1], phi, uniformFloor) > z0;
                     if (!shadow) {
                         if (inner && j + 1 < nMin) {
                             int u = up + sj * j;
@@ -685,7 +714,7 @@ final class SunSweep {
             } else {
                 double ha = a.height[at];
                 double hb = b.height[at];
-                boolean lines = j >= jTraced ? rayBlockedToEdge(i, j, z0) : between(ha, hb, phi, z0 - relief) > z0;
+                boolean lines = j >= jTraced ? rayBlockedToEdge(i, j, z0) : between(ha, hb, phi, floorOfRow[rowOf(i, j)]) > z0;
                 result = (lines || localBlocked(i, j, z0)) ? 1f : 0f;
             }
             int col = c0 + ci * i + cj * j;
@@ -696,8 +725,8 @@ final class SunSweep {
 
     /**
      * A cell's shadow height between its two lines, {@code phi} of the way from line a to line b. A line below
-     * {@code floor} (z0 − relief) counts as having no terrain, so the other line's height is taken whole: the same
-     * answer whether or not a window's halo reaches that line's distant samples.
+     * {@code floor} counts as having no terrain, so the other line's height is taken whole: the same answer
+     * whether or not a window's halo reaches that line's distant samples.
      */
     private static double between(double ha, double hb, double phi, double floor) {
         if (phi == 0 || !(hb >= floor)) {

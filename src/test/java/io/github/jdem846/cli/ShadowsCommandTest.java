@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.shadow.CellWindow;
+import io.github.jdem846.shadow.FileWindowCase;
 import java.awt.image.BufferedImage;
 import java.awt.image.Raster;
 import java.io.IOException;
@@ -147,6 +149,70 @@ class ShadowsCommandTest {
                 }
             }
         }
+    }
+
+    /**
+     * A case where the window's grid alone has a smaller elevation range than the file, and where that changes the
+     * sweep (found by {@link FileWindowCase#sensitive}): {@code shadows} and {@code render} must still give the
+     * whole file's cells, because they hand the sweep the file's minimum.
+     */
+    @Test
+    void aWindowedSweepEqualsTheWholeFileWhereTheWindowAloneWouldNot() throws IOException {
+        FileWindowCase c;
+        java.util.concurrent.ForkJoinPool pool = new java.util.concurrent.ForkJoinPool(1);
+        try {
+            c = FileWindowCase.sensitive(7, 400, pool);
+        } finally {
+            pool.shutdownNow();
+        }
+        Path flt = writeGridFloat(c.dem(), "probe");
+        CellWindow win = c.window();
+        String[] sun = {"--sun-azimuth", Double.toString(c.light().azimuthDegrees()), "--sun-elevation",
+            Double.toString(c.light().elevationDegrees())};
+        String cells = "cells:" + win.col() + "," + win.row() + "," + win.width() + "," + win.height();
+        int[] whole = mask(flt.toString(), "whole.png", concat(new String[] {"--algorithm", "sweep"}, sun));
+        int[] part = mask(flt.toString(), "part.png",
+                concat(new String[] {"--algorithm", "sweep", "--window", cells}, sun));
+        int[] wholeRgb = rgb(flt, "whole-render.png", sun);
+        int[] partRgb = rgb(flt, "part-render.png", concat(new String[] {"--window", cells}, sun));
+        int width = c.dem().width();
+        int differ = 0;
+        int differRgb = 0;
+        for (int y = 0; y < win.height(); y++) {
+            for (int x = 0; x < win.width(); x++) {
+                int at = (win.row() + y) * width + win.col() + x;
+                differ += whole[at] != part[y * win.width() + x] ? 1 : 0;
+                differRgb += wholeRgb[at] != partRgb[y * win.width() + x] ? 1 : 0;
+            }
+        }
+        assertEquals(0, differ, "shadows " + c.light() + " " + cells + ": cells that differ");
+        assertEquals(0, differRgb, "render " + c.light() + " " + cells + ": pixels that differ");
+    }
+
+    /** {@code render --tint gray --hillshade none --shadows sweep} of {@code flt}: the ARGB pixels. */
+    private int[] rgb(Path flt, String name, String... args) throws IOException {
+        Path out = dir.resolve(name);
+        CliRun run = CliRun.of(concat(new String[] {"render", flt.toString(), "-o", out.toString(), "-q", "--tint",
+            "gray", "--hillshade", "none", "--shadows", "sweep"}, args));
+        assertEquals(0, run.exitCode(), run.err());
+        BufferedImage img = ImageIO.read(out.toFile());
+        return img.getRGB(0, 0, img.getWidth(), img.getHeight(), null, 0, img.getWidth());
+    }
+
+    /** Writes {@code dem} (a metric grid) as GridFloat in UTM zone 11N, no-data −9999. */
+    private Path writeGridFloat(Dem dem, String name) throws IOException {
+        float[] v = dem.backingArray();
+        java.nio.ByteBuffer buf = java.nio.ByteBuffer.allocate(4 * v.length).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        for (float z : v) {
+            buf.putFloat(z == z ? z : -9999f);
+        }
+        Path flt = dir.resolve(name + ".flt");
+        Files.write(flt, buf.array());
+        Files.writeString(dir.resolve(name + ".hdr"), String.format(Locale.ROOT, "ncols %d%nnrows %d%n"
+                + "xllcorner 400000%nyllcorner 3700000%ncellsize %s%nNODATA_value -9999%nbyteorder LSBFIRST%n",
+                dem.width(), dem.height(), Double.toString(dem.geometry().cellWidth())));
+        Files.copy(Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.prj"), dir.resolve(name + ".prj"));
+        return flt;
     }
 
     @Test
