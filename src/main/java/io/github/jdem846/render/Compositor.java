@@ -1,6 +1,7 @@
 package io.github.jdem846.render;
 
 import io.github.jdem846.shade.Brightness;
+import io.github.jdem846.shade.Clamp;
 import io.github.jdem846.shade.HillshadeOptions;
 
 /**
@@ -39,7 +40,7 @@ public final class Compositor {
      */
     public double brightness(double dot, double shadowFraction, double fade) {
         double d = dot - fade - 2 * shadowIntensity * shadowFraction;
-        return tone.tone(Math.max(-1, Math.min(1, d)));
+        return tone.tone(Clamp.between(d, -1.0, 1.0));
     }
 
     /**

@@ -18,9 +18,9 @@ public final class Brightness {
      * @param d       the (toned) illumination in [−1, 1]
      */
     public static double adjustBrightness(double channel, double d) {
-        double t = Math.max(-1.0, Math.min(1.0, d));
+        double t = Clamp.between(d, -1.0, 1.0);
         double c = t < 0 ? channel * (1 + t) : channel + (1 - channel) * t;
-        return Math.max(0.0, Math.min(1.0, c));
+        return Clamp.between(c, 0.0, 1.0);
     }
 
     /**
@@ -29,7 +29,7 @@ public final class Brightness {
      * each channel {@code c/255}, with the clamp and the branch taken once per pixel.
      */
     public static int adjustBrightness(int argb, double d) {
-        double t = Math.max(-1.0, Math.min(1.0, d));
+        double t = Clamp.between(d, -1.0, 1.0);
         int a = argb >>> 24;
         int r = (argb >> 16) & 0xFF;
         int g = (argb >> 8) & 0xFF;
@@ -57,7 +57,7 @@ public final class Brightness {
     }
 
     private static int toByte(double c) {
-        return (int) Math.round(Math.max(0.0, Math.min(1.0, c)) * 255.0);
+        return (int) Math.round(Clamp.between(c, 0.0, 1.0) * 255.0);
     }
 
     /**

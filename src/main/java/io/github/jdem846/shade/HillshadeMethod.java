@@ -111,6 +111,6 @@ public enum HillshadeMethod {
     /** GDAL's float → byte store: the value as float32, clamped to 0 … 255, rounded to nearest (ties to even). */
     static int toByte(double value) {
         float f = (float) value;
-        return (int) Math.rint(Math.max(0f, Math.min(255f, f)));
+        return (int) Math.rint(Clamp.between(f, 0f, 255f));
     }
 }

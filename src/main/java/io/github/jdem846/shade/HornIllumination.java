@@ -60,7 +60,7 @@ public final class HornIllumination implements IlluminationStage {
                 final double ny = -zf * gy * dx;
                 final double len = Math.sqrt(nx * nx + ny * ny + area * area);
                 final double cos = len > 0 ? (nx * le + ny * ln + area * lu) / len : lu;
-                out[o] = (float) Math.max(-1.0, Math.min(1.0, cos));
+                out[o] = (float) Clamp.between(cos, -1.0, 1.0);
             }
         }
     }

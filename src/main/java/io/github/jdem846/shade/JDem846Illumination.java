@@ -83,7 +83,7 @@ public final class JDem846Illumination implements IlluminationStage {
                 if (belowHorizon && d > 0) {
                     d = 0.0;
                 }
-                out[o] = (float) Math.max(-1.0, Math.min(1.0, d));
+                out[o] = (float) Clamp.between(d, -1.0, 1.0);
             }
         }
     }

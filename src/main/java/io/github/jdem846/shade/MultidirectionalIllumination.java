@@ -64,16 +64,16 @@ public final class MultidirectionalIllumination implements IlluminationStage {
                     continue;
                 }
                 final double base = area * sinAlt;
-                final double v225 = Math.max(0.0, base + (x - y) * COS_225 * cosAltZ);
-                final double v270 = Math.max(0.0, base - x * cosAltZ);
-                final double v315 = Math.max(0.0, base + (x + y) * COS_225 * cosAltZ);
-                final double v360 = Math.max(0.0, base - y * cosAltZ);
+                final double v225 = Clamp.atLeastZero(base + (x - y) * COS_225 * cosAltZ);
+                final double v270 = Clamp.atLeastZero(base - x * cosAltZ);
+                final double v315 = Clamp.atLeastZero(base + (x + y) * COS_225 * cosAltZ);
+                final double v360 = Clamp.atLeastZero(base - y * cosAltZ);
                 final double w225 = 0.5 * s - x * y;
                 final double w315 = s - w225;
                 final double weighted = (w225 * v225 + xx * v270 + w315 * v315 + yy * v360) / s;
                 final double denominator = Math.sqrt(area * area + zf * zf * s);
                 final double result = weighted / denominator / 2;
-                out[o] = (float) Math.max(0.0, Math.min(1.0, result));
+                out[o] = (float) Clamp.between(result, 0.0, 1.0);
             }
         }
     }
