@@ -27,8 +27,9 @@ final class TerrainSampler {
      * no-data.
      */
     static double bilinear(float[] v, int w, int h, double x, double y) {
-        double cx = Math.min(Math.max(x, 0), w - 1);
-        double cy = Math.min(Math.max(y, 0), h - 1);
+        // Math.min(Math.max(x, 0), w − 1), by comparisons (see io.github.jdem846.shade.Clamp): x is never NaN here
+        double cx = x <= 0 ? 0 : x >= w - 1 ? w - 1 : x;
+        double cy = y <= 0 ? 0 : y >= h - 1 ? h - 1 : y;
         int c0 = (int) Math.floor(cx);
         int r0 = (int) Math.floor(cy);
         double fx = cx - c0;
