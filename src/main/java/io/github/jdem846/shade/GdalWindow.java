@@ -32,24 +32,46 @@ final class GdalWindow {
      * @return false when the centre is no-data ({@code win} is then undefined)
      */
     static boolean fill(float[] v, int width, int height, int c, int r, double[] win) {
-        final double centre = v[r * width + c];
-        if (Double.isNaN(centre)) {
+        final int at = r * width + c;
+        final double centre = v[at];
+        if (centre != centre) {
             return false;
         }
-        if (c >= 1 && c <= width - 2 && r >= 1 && r <= height - 2) {
-            int i = (r - 1) * width + c - 1;
-            win[0] = v[i];
-            win[1] = v[i + 1];
-            win[2] = v[i + 2];
-            i += width;
-            win[3] = v[i];
-            win[4] = v[i + 1];
-            win[5] = v[i + 2];
-            i += width;
-            win[6] = v[i];
-            win[7] = v[i + 1];
-            win[8] = v[i + 2];
-        } else if (height == 1 || r == 0 || r == height - 1) {
+        if (c < 1 || c > width - 2 || r < 1 || r > height - 2) {
+            return fillAtEdge(v, width, height, c, r, centre, win);
+        }
+        // Inside the grid: the nine cells. Kept small, so that the JIT inlines it into the kernels' loops.
+        int i = at - width - 1;
+        final double w0 = v[i];
+        final double w1 = v[i + 1];
+        final double w2 = v[i + 2];
+        i += width;
+        final double w3 = v[i];
+        final double w5 = v[i + 2];
+        i += width;
+        final double w6 = v[i];
+        final double w7 = v[i + 1];
+        final double w8 = v[i + 2];
+        win[0] = w0;
+        win[1] = w1;
+        win[2] = w2;
+        win[3] = w3;
+        win[4] = centre;
+        win[5] = w5;
+        win[6] = w6;
+        win[7] = w7;
+        win[8] = w8;
+        final double sum = w0 + w1 + w2 + w3 + w5 + w6 + w7 + w8;
+        if (sum != sum) {
+            replaceNoData(win, centre); // a NaN, or +∞ and −∞ together (then nothing to replace)
+        }
+        return true;
+    }
+
+    /** {@link #fill} for a cell on the first or last row or column. */
+    private static boolean fillAtEdge(float[] v, int width, int height, int c, int r, double centre,
+                                      double[] win) {
+        if (height == 1 || r == 0 || r == height - 1) {
             final int jmin = c == 0 ? c : c - 1;
             final int jmax = c == width - 1 ? c : c + 1;
             if (height == 1) {
@@ -91,12 +113,17 @@ final class GdalWindow {
                 win[3 * k + 2] = east;
             }
         }
+        replaceNoData(win, centre);
+        return true;
+    }
+
+    /** Every no-data value of the window becomes the centre's. */
+    private static void replaceNoData(double[] win, double centre) {
         for (int k = 0; k < 9; k++) {
             if (Double.isNaN(win[k])) {
                 win[k] = centre;
             }
         }
-        return true;
     }
 
     private static void rowAt(float[] v, int width, int row, int jmin, int j, int jmax, double[] win, int at) {

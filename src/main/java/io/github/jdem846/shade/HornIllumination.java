@@ -42,26 +42,56 @@ public final class HornIllumination implements IlluminationStage {
         final double zf = options.zFactor() / 8.0;
         final CellSpacing spacing = new CellSpacing(dem.geometry(), options);
         final float[] v = dem.backingArray();
+        final int width = dem.width();
+        final int height = dem.height();
         final double[] win = new double[9];
         for (int r = row0; r < row0 + h; r++) {
             final double dx = spacing.eastWest(r);
             final double dy = spacing.northSouth(r);
             final double area = dx * dy;
+            final boolean innerRow = r >= 1 && r <= height - 2;
             int o = (r - row0) * w;
             for (int c = col0; c < col0 + w; c++, o++) {
-                if (!GdalWindow.fill(v, dem.width(), dem.height(), c, r, win)) {
+                if (innerRow && c >= 1 && c <= width - 2) {
+                    // inside the grid with no no-data around: the nine cells straight from the array (the same
+                    // numbers GdalWindow gives, without its window array)
+                    final int i = (r - 1) * width + c - 1;
+                    final int j = i + width;
+                    final int k = j + width;
+                    final double w0 = v[i];
+                    final double w1 = v[i + 1];
+                    final double w2 = v[i + 2];
+                    final double w3 = v[j];
+                    final double w4 = v[j + 1];
+                    final double w5 = v[j + 2];
+                    final double w6 = v[k];
+                    final double w7 = v[k + 1];
+                    final double w8 = v[k + 2];
+                    final double sum = w0 + w1 + w2 + w3 + w4 + w5 + w6 + w7 + w8;
+                    if (sum == sum) {
+                        out[o] = shade((w2 + 2 * w5 + w8) - (w0 + 2 * w3 + w6),
+                                (w0 + 2 * w1 + w2) - (w6 + 2 * w7 + w8), zf, dx, dy, area, le, ln, lu);
+                        continue;
+                    }
+                }
+                if (!GdalWindow.fill(v, width, height, c, r, win)) {
                     out[o] = Float.NaN;
                     continue;
                 }
-                final double gx = (win[2] + 2 * win[5] + win[8]) - (win[0] + 2 * win[3] + win[6]);
-                final double gy = (win[0] + 2 * win[1] + win[2]) - (win[6] + 2 * win[7] + win[8]);
-                // The normal (−∂z/∂east, −∂z/∂north, 1) multiplied by Δx·Δy.
-                final double nx = -zf * gx * dy;
-                final double ny = -zf * gy * dx;
-                final double len = Math.sqrt(nx * nx + ny * ny + area * area);
-                final double cos = len > 0 ? (nx * le + ny * ln + area * lu) / len : lu;
-                out[o] = (float) Clamp.between(cos, -1.0, 1.0);
+                out[o] = shade((win[2] + 2 * win[5] + win[8]) - (win[0] + 2 * win[3] + win[6]),
+                        (win[0] + 2 * win[1] + win[2]) - (win[6] + 2 * win[7] + win[8]), zf, dx, dy, area, le, ln, lu);
             }
         }
+    }
+
+    /** The clamped cosine of incidence from Horn's sums gx (east) and gy (north). */
+    private static float shade(double gx, double gy, double zf, double dx, double dy, double area, double le,
+                               double ln, double lu) {
+        // The normal (−∂z/∂east, −∂z/∂north, 1) multiplied by Δx·Δy.
+        final double nx = -zf * gx * dy;
+        final double ny = -zf * gy * dx;
+        final double len = Math.sqrt(nx * nx + ny * ny + area * area);
+        final double cos = len > 0 ? (nx * le + ny * ln + area * lu) / len : lu;
+        return (float) Clamp.between(cos, -1.0, 1.0);
     }
 }
