@@ -539,7 +539,7 @@ final class SunSweep {
                 height[i - wi0] = best;
             }
             double z = lineSample(k, i);
-            best = Math.max(best, prev) - drop;
+            best = (best >= prev ? best : prev) - drop;   // never NaN: a comparison, not Math.max (see Clamp)
             prev = z == z ? z - drop : Double.NEGATIVE_INFINITY;
         }
     }
@@ -685,7 +685,8 @@ final class SunSweep {
     private static void advance(double[] best, double[] prev, double[] h, int q, double z, double drop) {
         double b = best[q];
         h[q] = b;
-        best[q] = Math.max(b, prev[q]) - drop;
+        double p = prev[q];
+        best[q] = (b >= p ? b : p) - drop;
         prev[q] = z == z ? z - drop : Double.NEGATIVE_INFINITY;
     }
 
