@@ -6,6 +6,7 @@ import io.github.jdem846.render.RenderProgress;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Renderer;
 import io.github.jdem846.render.Scene;
+import io.github.jdem846.shade.Clamp;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import java.io.PrintWriter;
 import java.util.concurrent.Callable;
@@ -76,7 +77,7 @@ public final class ShadowsCommand implements Callable<Integer> {
         float[] window = mask;
         byte[] bytes = new byte[window.length];
         for (int i = 0; i < window.length; i++) {
-            bytes[i] = (byte) Math.round(Math.max(0, Math.min(1, window[i])) * 255f);
+            bytes[i] = (byte) Math.round(Clamp.between(window[i], 0f, 1f) * 255f);
         }
         output.writeGray(bytes, CommandSupport.outputGeometry(loaded), null, err);
         return 0;
