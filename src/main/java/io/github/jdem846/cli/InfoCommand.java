@@ -1,5 +1,7 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.geo.CrsResolver;
 import io.github.jdem846.geo.LatLon;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemReader;
@@ -68,6 +70,11 @@ public final class InfoCommand implements Callable<Integer> {
         } else {
             info = DemReader.inspect(file);
             stats = DemReader.statistics(file);
+        }
+        CrsInfo crs = CrsResolver.complete(info.geometry().crs());
+        if (crs != info.geometry().crs()) {
+            info = new DemInfo(info.source(), info.format(), info.dataType(), info.bands(),
+                    info.geometry().withCrs(crs), info.declaredNoData(), info.notices());
         }
         Body body = bodyOptions.body();
         info = info.withDefaultEllipsoid(body.ellipsoid());

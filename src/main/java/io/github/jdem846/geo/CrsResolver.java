@@ -52,6 +52,20 @@ public final class CrsResolver {
     }
 
     /**
+     * The same CRS with Apache SIS's definition (name, ellipsoid, SIS object) when a reader kept only its EPSG code
+     * (a GeoTIFF's geographic CRS is read from its GeoKeys without starting SIS); {@code crs} itself when SIS
+     * already resolved it, when it has no code, or when SIS does not know the code offline or gives another kind.
+     * The "assumed" flag is kept.
+     */
+    public static CrsInfo complete(CrsInfo crs) {
+        if (crs.sisCrs() != null || crs.epsg() == null) {
+            return crs;
+        }
+        return fromEpsg(crs.epsg()).filter(c -> c.kind() == crs.kind())
+                .map(c -> crs.assumed() ? c.asAssumed() : c).orElse(crs);
+    }
+
+    /**
      * Parses an OGC or ESRI WKT 1/2 string (e.g. the content of an ESRI {@code .prj}).
      *
      * @throws IllegalArgumentException when the text is not a CRS Apache SIS can parse; the message says why

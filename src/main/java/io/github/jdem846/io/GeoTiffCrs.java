@@ -90,6 +90,14 @@ final class GeoTiffCrs {
 
     private static CrsInfo geographic(GeoKeyDirectory keys, List<String> notices) {
         Integer code = keys.code(GEOGRAPHIC_TYPE).filter(c -> c > 0 && c != USER_DEFINED).orElse(null);
+        Optional<Ellipsoid> axes = axesEllipsoid(keys);
+        boolean degrees = keys.code(GEOG_ANGULAR_UNITS).orElse(ANGULAR_DEGREE) == ANGULAR_DEGREE;
+        if (code != null && axes.isPresent() && degrees) {
+            // Degrees on a stated ellipsoid (GDAL writes the axes with the code): all that metric cell sizes need,
+            // without starting Apache SIS (~0.3 s on a cold JVM); a .prj, if asked for, is built from the code.
+            String name = keys.text(GEOG_CITATION).or(() -> keys.text(GT_CITATION)).orElse("EPSG:" + code);
+            return CrsInfo.geographic(name, code, axes.get());
+        }
         if (code != null) {
             Optional<CrsInfo> sis = CrsResolver.fromEpsg(code);
             if (sis.isPresent() && sis.get().kind() == CrsInfo.Kind.GEOGRAPHIC) {
@@ -117,15 +125,9 @@ final class GeoTiffCrs {
         if (byCode.isPresent()) {
             return byCode;
         }
-        Optional<Double> a = keys.number(GEOG_SEMI_MAJOR_AXIS);
-        if (a.isPresent() && a.get() > 0) {
-            Optional<Double> invF = keys.number(GEOG_INV_FLATTENING);
-            Optional<Double> b = keys.number(GEOG_SEMI_MINOR_AXIS);
-            double inverseFlattening = invF.orElseGet(() -> b.map(bb -> bb >= a.get() ? 0 : a.get() / (a.get() - bb))
-                    .orElse(Double.NaN));
-            if (inverseFlattening == 0 || inverseFlattening > 1) {
-                return Optional.of(new Ellipsoid("from GeoKeys", a.get(), inverseFlattening));
-            }
+        Optional<Ellipsoid> byAxes = axesEllipsoid(keys);
+        if (byAxes.isPresent()) {
+            return byAxes;
         }
         Optional<Ellipsoid> byDatum = keys.code(GEOG_GEODETIC_DATUM).filter(c -> c != USER_DEFINED)
                 .flatMap(CrsResolver::ellipsoidOfDatumEpsg);
@@ -134,5 +136,29 @@ final class GeoTiffCrs {
         }
         return keys.code(GEOGRAPHIC_TYPE).filter(c -> c != USER_DEFINED).flatMap(CrsResolver::fromEpsg)
                 .map(CrsInfo::ellipsoid);
+    }
+
+    /**
+     * The ellipsoid of GeogSemiMajorAxisGeoKey with GeogInvFlatteningGeoKey or GeogSemiMinorAxisGeoKey (metres, as
+     * GDAL writes them), named WGS 84 or GRS 1980 when it is one of those; empty when the keys do not give it.
+     */
+    static Optional<Ellipsoid> axesEllipsoid(GeoKeyDirectory keys) {
+        Optional<Double> a = keys.number(GEOG_SEMI_MAJOR_AXIS);
+        if (a.isEmpty() || !(a.get() > 0)) {
+            return Optional.empty();
+        }
+        Optional<Double> invF = keys.number(GEOG_INV_FLATTENING);
+        Optional<Double> b = keys.number(GEOG_SEMI_MINOR_AXIS);
+        double inverseFlattening = invF.orElseGet(() -> b.map(bb -> bb >= a.get() ? 0 : a.get() / (a.get() - bb))
+                .orElse(Double.NaN));
+        if (!(inverseFlattening == 0 || inverseFlattening > 1)) {
+            return Optional.empty();
+        }
+        for (Ellipsoid known : new Ellipsoid[] {Ellipsoid.WGS84, Ellipsoid.GRS80}) {
+            if (known.semiMajorAxis() == a.get() && known.inverseFlattening() == inverseFlattening) {
+                return Optional.of(known);
+            }
+        }
+        return Optional.of(new Ellipsoid("from GeoKeys", a.get(), inverseFlattening));
     }
 }

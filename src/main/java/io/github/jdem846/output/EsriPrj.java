@@ -1,14 +1,13 @@
 package io.github.jdem846.output;
 
 import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.geo.CrsResolver;
 import java.time.ZoneOffset;
 import java.util.Locale;
 import java.util.Optional;
 import org.apache.sis.io.wkt.Convention;
 import org.apache.sis.io.wkt.WKTFormat;
-import org.apache.sis.referencing.CRS;
 import org.opengis.referencing.crs.CoordinateReferenceSystem;
-import org.opengis.util.FactoryException;
 
 /**
  * The text of a {@code .prj} sidecar: the CRS as one line of WKT 1 in the "common units" dialect that ESRI
@@ -37,11 +36,11 @@ final class EsriPrj {
     static Result of(CrsInfo crs) {
         CoordinateReferenceSystem sis = crs.sisCrs();
         if (sis == null && crs.epsg() != null) {
-            try {
-                sis = CRS.forCode("EPSG:" + crs.epsg());
-            } catch (FactoryException | RuntimeException e) {
+            // east–north axis order, as every CRS a reader resolves (CrsResolver)
+            sis = CrsResolver.fromEpsg(crs.epsg()).map(CrsInfo::sisCrs).orElse(null);
+            if (sis == null) {
                 return Result.omitted("no .prj written: EPSG:" + crs.epsg()
-                        + " has no definition available offline (" + e.getMessage() + ")");
+                        + " has no definition available offline");
             }
         }
         if (sis == null) {
