@@ -1,12 +1,21 @@
 package io.github.jdem846.cli;
 
 import io.github.jdem846.geo.CrsResolver;
+import io.github.jdem846.io.DemReader;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.Optional;
 
 /**
- * Initialises Apache SIS (its classes, units and EPSG objects, about 0.3 s on first use) on a daemon thread while
- * picocli parses the command line and the command opens its file, so that the first CRS a reader resolves does not
- * wait for all of it (docs/performance.md, "Whole commands vs gdaldem"). Any failure here is ignored: the reader
- * resolves the CRS again and reports its own errors.
+ * Reads the input's header on a daemon thread while picocli parses the command line, so that the reader's slow
+ * first steps overlap with it: the TIFF decoder's classes and, only when the file needs them, Apache SIS's (about
+ * 0.3 s on first use: a projected CRS, a {@code .prj}). A lat/lon GeoTIFF or a file without CRS never starts SIS,
+ * which would otherwise take a core from the command for nothing (docs/performance.md, "Start-up"). The input is
+ * the first argument that names an existing DEM file; without one (the bundled sample, a typo) SIS is warmed with a
+ * geographic and a projected CRS as the sample needs. Any failure here is ignored: the command reads the file again
+ * and reports its own errors.
  */
 final class CrsWarmUp {
 
@@ -21,19 +30,52 @@ final class CrsWarmUp {
     private CrsWarmUp() {
     }
 
-    /** Starts the warm-up thread and returns at once. */
-    static void start() {
-        Thread t = new Thread(CrsWarmUp::run, "jdem846-crs-warm-up");
+    /** Starts the warm-up thread for the command line {@code args} and returns at once. */
+    static void start(String[] args) {
+        String[] copy = args.clone();
+        Thread t = new Thread(() -> run(copy), "jdem846-crs-warm-up");
         t.setDaemon(true);
         t.start();
     }
 
-    private static void run() {
+    private static void run(String[] args) {
         try {
-            CrsResolver.fromEpsg(4326);
-            CrsResolver.fromWkt(UTM_WKT);
+            if (readFirstDem(args).isEmpty()) {
+                CrsResolver.fromEpsg(4326);
+                CrsResolver.fromWkt(UTM_WKT);
+            }
         } catch (RuntimeException | LinkageError e) {
             // ignored: see the class comment
+        }
+    }
+
+    /**
+     * Reads the header (and CRS) of the first argument that names an existing DEM file, as the command's reader
+     * will: the warm-up itself. Options, missing files and files that are not DEMs (a colour table, an earlier
+     * output) are skipped.
+     *
+     * @return that file, or empty when no argument names one
+     */
+    static Optional<Path> readFirstDem(String[] args) {
+        for (String arg : args) {
+            if (arg.startsWith("-") || !isFile(arg)) {
+                continue;
+            }
+            try {
+                DemReader.inspect(Path.of(arg));
+                return Optional.of(Path.of(arg));
+            } catch (IOException | RuntimeException e) {
+                // not a DEM: try the next argument
+            }
+        }
+        return Optional.empty();
+    }
+
+    private static boolean isFile(String arg) {
+        try {
+            return Files.isRegularFile(Path.of(arg));
+        } catch (InvalidPathException e) {
+            return false;
         }
     }
 }

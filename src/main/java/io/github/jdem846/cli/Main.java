@@ -65,7 +65,7 @@ public final class Main implements Runnable {
         if (!java.util.Arrays.asList(args).contains("--verbose")) {
             quietLibraryLogs();
         }
-        CrsWarmUp.start();
+        CrsWarmUp.start(args);
         System.exit(commandLine(args).execute(args));
     }
 

@@ -1,0 +1,40 @@
+package io.github.jdem846.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Which argument the start-up warm-up takes for the input DEM; it must never fail, whatever the arguments. */
+class CrsWarmUpTest {
+
+    private static final String JACKSBORO = "testdata/dem/jacksboro_srtm3s_wgs84.tif";
+    private static final String BT_FLT = "testdata/dem/bigtujunga_srtm30m_utm11n.flt";
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void theFirstArgumentThatIsADemIsRead() throws IOException {
+        Path colours = dir.resolve("colours.txt");
+        Files.writeString(colours, "0 0 0 0\n100 255 255 255\n");
+        Path oldOutput = dir.resolve("old.png");
+        Files.write(oldOutput, new byte[] {(byte) 0x89, 'P', 'N', 'G'});
+        assertEquals(Optional.of(Path.of(JACKSBORO)), CrsWarmUp.readFirstDem(new String[] {"tint", "--tint",
+            colours.toString(), JACKSBORO, "-o", oldOutput.toString()}));
+        assertEquals(Optional.of(Path.of(BT_FLT)), CrsWarmUp.readFirstDem(new String[] {"hillshade", "-o",
+            oldOutput.toString(), "--sun-azimuth=-720", BT_FLT, JACKSBORO}));
+    }
+
+    @Test
+    void noDemAmongTheArgumentsGivesNothing() {
+        assertEquals(Optional.empty(), CrsWarmUp.readFirstDem(new String[0]));
+        assertEquals(Optional.empty(), CrsWarmUp.readFirstDem(new String[] {"render", "-o", "x.png"}));
+        assertEquals(Optional.empty(), CrsWarmUp.readFirstDem(new String[] {"hillshade", "missing.tif",
+            dir.toString(), "\u0000bad", "--window=1,2,3,4"}));
+    }
+}
