@@ -644,42 +644,61 @@ final class SunSweep {
             int outBase = (r0 + ri * i - win.row()) * win.width() + (c0 + ci * i - win.col());
             boolean inner = i + 1 < nMaj;
             int up = inner ? baseI[i + 1] : 0;
-            for (int q = q0; q <= q1; q++) {
+            // cells whose ray leaves through the file's exit edge within a few steps (j ≥ jTraced) are traced
+            // in a loop of their own, so that the common loop holds no ray march
+            int qEdge = jTraced == Integer.MAX_VALUE ? q1 + 1
+                    : (int) Math.max(q0, Math.min(q1 + 1L, (long) jTraced - off));
+            for (int q = q0; q < qEdge; q++) {
                 int j = off + q;
                 int cell = base + sj * j;
                 double z0 = v[cell];
-                float result;
-                if (z0 != z0) {
-                    result = 0f;
-                } else {
-                    boolean shadow = j >= jTraced ? rayBlockedToEdge(i, j, z0)
-                            : between(h[q], h[q + 1], phi, uniformFloor) > z0;
-                    if (!shadow) {
-                        if (inner && j + 1 < nMin) {
-                            int u = up + sj * j;
-                            double z10 = v[u];
-                            double z01 = v[cell + sj];
-                            double z11 = v[u + sj];
-                            // as localBlocked: the bilinear surface never exceeds its highest corner; else
-                            // terrain − ray along the first step is t·(lin + quad·t), decided at the first and the
-                            // last sample; a no-data corner makes lin + quad NaN (also when m = 0)
-                            double lin = (z10 - z0) + (z01 - z0) * m - dTan;
-                            double quad = (z11 - z10 - z01 + z0) * m;
-                            double end = lin + quad;
-                            if (end == end) {
-                                shadow = (z10 > z0 | z01 > z0 | z11 > z0) & (lin + quad * tFirst > 0 | end > 0);
-                            } else {
-                                shadow = localBlocked(i, j, z0);
-                            }
-                        } else {
-                            shadow = localBlocked(i, j, z0);
-                        }
-                    }
+                float result = 0f;
+                if (z0 == z0) {
+                    boolean shadow = between(h[q], h[q + 1], phi, uniformFloor) > z0
+                            || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
+                    result = shadow ? 1f : 0f;
+                }
+                out[outBase + outStrideJ * j] = result;
+            }
+            for (int q = qEdge; q <= q1; q++) {
+                int j = off + q;
+                int cell = base + sj * j;
+                double z0 = v[cell];
+                float result = 0f;
+                if (z0 == z0) {
+                    boolean shadow = rayBlockedToEdge(i, j, z0)
+                            || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
                     result = shadow ? 1f : 0f;
                 }
                 out[outBase + outStrideJ * j] = result;
             }
         }
+    }
+
+    /**
+     * {@link #localBlocked} for the lockstep loop: the bilinear surface never exceeds its highest corner; else
+     * terrain − ray along the first step is t·(lin + quad·t), decided at the first and the last sample; a no-data
+     * corner makes lin + quad NaN (also when m = 0), and then, or at the last row or column, localBlocked decides.
+     *
+     * @param up the flat index of frame cell (i + 1, 0) when {@code inner}
+     */
+    private boolean firstStepBlocked(int i, int j, int cell, double z0, boolean inner, int up, double dTan,
+                                     double tFirst) {
+        if (!inner || j + 1 >= nMin) {
+            return localBlocked(i, j, z0);
+        }
+        int sj = strideJ;
+        int u = up + sj * j;
+        double z10 = v[u];
+        double z01 = v[cell + sj];
+        double z11 = v[u + sj];
+        double lin = (z10 - z0) + (z01 - z0) * m - dTan;
+        double quad = (z11 - z10 - z01 + z0) * m;
+        double end = lin + quad;
+        if (end == end) {
+            return (z10 > z0 | z01 > z0 | z11 > z0) & (lin + quad * tFirst > 0 | end > 0);
+        }
+        return localBlocked(i, j, z0);
     }
 
     private static void advance(double[] best, double[] prev, double[] h, int q, double z, double drop) {
