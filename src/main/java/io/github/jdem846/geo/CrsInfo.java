@@ -14,7 +14,9 @@ import org.opengis.referencing.crs.CoordinateReferenceSystem;
  * @param kind               geographic (axes in degrees), projected (axes in a linear unit) or unknown
  * @param linearUnitMeters   metres per axis unit for projected CRSs (1, 0.3048, 1200/3937); NaN otherwise
  * @param ellipsoid          the ellipsoid, or {@code null} when unknown (geographic grids then use WGS 84)
- * @param sisCrs             the Apache SIS CRS, or {@code null} when it could not be resolved
+ * @param sisCrs             the Apache SIS CRS, or {@code null} when it could not be resolved or was not needed
+ *                           (a GeoTIFF's lat/lon CRS read from its GeoKeys alone: {@link CrsResolver#complete}
+ *                           resolves it from the EPSG code)
  * @param assumed            true when nothing in the file named the CRS and it was inferred (e.g. degrees from the
  *                           extent); the CLI reports this
  */
@@ -66,7 +68,7 @@ public record CrsInfo(String name, Integer epsg, Kind kind, double linearUnitMet
         return kind == Kind.GEOGRAPHIC;
     }
 
-    /** The Apache SIS CRS when one was resolved. */
+    /** The Apache SIS CRS when one was resolved ({@link CrsResolver#complete} resolves one from the EPSG code). */
     public Optional<CoordinateReferenceSystem> sis() {
         return Optional.ofNullable(sisCrs);
     }
