@@ -69,23 +69,51 @@ public final class JDem846Illumination implements IlluminationStage {
                     out[o] = Float.NaN;
                     continue;
                 }
-                // Heights relative to the centre, in double (float32 extremes cannot overflow); NaN = missing.
-                double e = c + 1 < width ? (double) v[rowStart + c + 1] - zc : Double.NaN;
-                double wv = c > 0 ? (double) v[rowStart + c - 1] - zc : Double.NaN;
-                double n = r > 0 ? (double) v[rowStart - width + c] - zc : Double.NaN;
-                double s = r + 1 < height ? (double) v[rowStart + width + c] - zc : Double.NaN;
-                // Extrapolate a missing neighbour through the centre; zero slope when both are missing.
-                final double eFilled = !Double.isNaN(e) ? e : !Double.isNaN(wv) ? -wv : 0.0;
-                final double wFilled = !Double.isNaN(wv) ? wv : !Double.isNaN(e) ? -e : 0.0;
-                final double nFilled = !Double.isNaN(n) ? n : !Double.isNaN(s) ? -s : 0.0;
-                final double sFilled = !Double.isNaN(s) ? s : !Double.isNaN(n) ? -n : 0.0;
-                double d = cosineOfIncidence(dx, dy, eFilled * k, wFilled * k, nFilled * k, sFilled * k, le, ln, lu);
-                if (belowHorizon && d > 0) {
-                    d = 0.0;
+                if (c >= 1 && c + 1 < width && r >= 1 && r + 1 < height) {
+                    // inside the grid: the four neighbours straight from the array; when none is missing (their
+                    // sum is not NaN) this is what the general path below computes, without its fills
+                    final double e = (double) v[rowStart + c + 1] - zc;
+                    final double wv = (double) v[rowStart + c - 1] - zc;
+                    final double n = (double) v[rowStart - width + c] - zc;
+                    final double s = (double) v[rowStart + width + c] - zc;
+                    final double sum = e + wv + n + s;
+                    if (sum == sum) {
+                        double d = cosineOfIncidence(dx, dy, e * k, wv * k, n * k, s * k, le, ln, lu);
+                        if (belowHorizon && d > 0) {
+                            d = 0.0;
+                        }
+                        out[o] = (float) Clamp.between(d, -1.0, 1.0);
+                        continue;
+                    }
                 }
-                out[o] = (float) Clamp.between(d, -1.0, 1.0);
+                out[o] = general(v, width, height, c, r, dx, dy, k, le, ln, lu, belowHorizon);
             }
         }
+    }
+
+    /**
+     * One cell (centre not no-data) with the neighbours read with bounds checks and a missing one filled: also the
+     * reference the direct interior path must equal (WindowKernelEquivalenceTest).
+     */
+    static float general(float[] v, int width, int height, int c, int r, double dx, double dy, double k, double le,
+                         double ln, double lu, boolean belowHorizon) {
+        final int rowStart = r * width;
+        final float zc = v[rowStart + c];
+        // Heights relative to the centre, in double (float32 extremes cannot overflow); NaN = missing.
+        double e = c + 1 < width ? (double) v[rowStart + c + 1] - zc : Double.NaN;
+        double wv = c > 0 ? (double) v[rowStart + c - 1] - zc : Double.NaN;
+        double n = r > 0 ? (double) v[rowStart - width + c] - zc : Double.NaN;
+        double s = r + 1 < height ? (double) v[rowStart + width + c] - zc : Double.NaN;
+        // Extrapolate a missing neighbour through the centre; zero slope when both are missing.
+        final double eFilled = !Double.isNaN(e) ? e : !Double.isNaN(wv) ? -wv : 0.0;
+        final double wFilled = !Double.isNaN(wv) ? wv : !Double.isNaN(e) ? -e : 0.0;
+        final double nFilled = !Double.isNaN(n) ? n : !Double.isNaN(s) ? -s : 0.0;
+        final double sFilled = !Double.isNaN(s) ? s : !Double.isNaN(n) ? -n : 0.0;
+        double d = cosineOfIncidence(dx, dy, eFilled * k, wFilled * k, nFilled * k, sFilled * k, le, ln, lu);
+        if (belowHorizon && d > 0) {
+            d = 0.0;
+        }
+        return (float) Clamp.between(d, -1.0, 1.0);
     }
 
     /**

@@ -10,9 +10,11 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Horn and multidirectional read the nine cells straight from the array where none is missing, and through
- * {@link GdalWindow} elsewhere. Both paths must give the same float, bit for bit: checked against a reference that
- * takes every cell through {@link GdalWindow} with the kernels' documented formulas, on random grids with no-data,
- * infinities and float32 extremes, for whole grids and for tiles.
+ * {@link GdalWindow} elsewhere; jdem846 reads its four neighbours directly inside the grid and through its general
+ * path (bounds checks, fills) elsewhere. Both paths must give the same float, bit for bit: checked against a
+ * reference that takes every cell through {@link GdalWindow} with the kernels' documented formulas (jdem846:
+ * through {@link JDem846Illumination#general}), on random grids with no-data, infinities and float32 extremes, for
+ * whole grids and for tiles.
  */
 class WindowKernelEquivalenceTest {
 
@@ -40,21 +42,31 @@ class WindowKernelEquivalenceTest {
             int th = 1 + rnd.nextInt(h - r0);
             float[] horn = new float[tw * th];
             float[] multi = new float[tw * th];
+            float[] jdem = new float[tw * th];
             new HornIllumination(options).illuminate(dem, light, c0, r0, tw, th, horn);
             new MultidirectionalIllumination(options).illuminate(dem, light, c0, r0, tw, th, multi);
+            new JDem846Illumination(options).illuminate(dem, light, c0, r0, tw, th, jdem);
+            double k = options.zFactor() * options.lightMultiple();
             CellSpacing spacing = new CellSpacing(dem.geometry(), options);
             double[] win = new double[9];
             for (int r = r0; r < r0 + th; r++) {
                 for (int c = c0; c < c0 + tw; c++) {
                     int o = (r - r0) * tw + c - c0;
                     String at = "trial " + t + " cell (" + c + ", " + r + ")";
+                    double dx = spacing.eastWest(r);
+                    double dy = spacing.northSouth(r);
+                    if (Float.isNaN(v[r * w + c])) {
+                        assertEquals(Float.NaN, jdem[o], at);
+                    } else {
+                        assertEquals(Float.floatToRawIntBits(JDem846Illumination.general(v, w, h, c, r, dx, dy, k,
+                                light.east(), light.north(), light.up(), light.isBelowHorizon())),
+                                Float.floatToRawIntBits(jdem[o]), at + " jdem846");
+                    }
                     if (!GdalWindow.fill(v, w, h, c, r, win)) {
                         assertEquals(Float.NaN, horn[o], at);
                         assertEquals(Float.NaN, multi[o], at);
                         continue;
                     }
-                    double dx = spacing.eastWest(r);
-                    double dy = spacing.northSouth(r);
                     assertEquals(Float.floatToRawIntBits(horn(win, dx, dy, options.zFactor() / 8.0, light)),
                             Float.floatToRawIntBits(horn[o]), at + " horn");
                     assertEquals(Float.floatToRawIntBits(multidirectional(win, dx, dy, options.zFactor() / 8.0,
