@@ -15,8 +15,9 @@ import org.opengis.referencing.crs.CoordinateReferenceSystem;
  * @param linearUnitMeters   metres per axis unit for projected CRSs (1, 0.3048, 1200/3937); NaN otherwise
  * @param ellipsoid          the ellipsoid, or {@code null} when unknown (geographic grids then use WGS 84)
  * @param sisCrs             the Apache SIS CRS, or {@code null} when it could not be resolved or was not needed
- *                           (a GeoTIFF's lat/lon CRS read from its GeoKeys alone: {@link CrsResolver#complete}
- *                           resolves it from the EPSG code)
+ *                           (a GeoTIFF's lat/lon CRS read from its GeoKeys alone, a UTM zone known by its EPSG
+ *                           code ({@link UtmZone}), an implied WGS 84: {@link CrsResolver#complete} resolves it
+ *                           from the EPSG code)
  * @param assumed            true when nothing in the file named the CRS and it was inferred (e.g. degrees from the
  *                           extent); the CLI reports this
  */
@@ -35,6 +36,12 @@ public record CrsInfo(String name, Integer epsg, Kind kind, double linearUnitMet
 
     /** Nothing known. */
     public static final CrsInfo UNKNOWN = new CrsInfo(null, null, Kind.UNKNOWN, Double.NaN, null, null, false);
+
+    /**
+     * Geographic WGS 84 (EPSG:4326) without a SIS object, for formats that imply it (SRTM .hgt, a grid assumed to
+     * be in degrees); {@link CrsResolver#complete} gives Apache SIS's definition when one is needed.
+     */
+    public static final CrsInfo WGS84 = geographic("WGS 84", 4326, Ellipsoid.WGS84);
 
     public CrsInfo {
         Objects.requireNonNull(kind, "kind");

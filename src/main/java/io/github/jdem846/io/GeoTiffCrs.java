@@ -20,15 +20,17 @@ import static io.github.jdem846.geo.GeoKeys.USER_DEFINED;
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.CrsResolver;
 import io.github.jdem846.geo.Ellipsoid;
+import io.github.jdem846.geo.UtmZone;
 import java.util.List;
 import java.util.Optional;
 
 /**
  * The CRS of a GeoTIFF from its GeoKeys: the EPSG code of {@code ProjectedCSTypeGeoKey} or
- * {@code GeographicTypeGeoKey} resolved by Apache SIS when it can do so offline; otherwise what the keys say on
- * their own (model type, {@code ProjLinearUnitsGeoKey}, ellipsoid or datum code or axes, citations), which is
- * enough for metric cell sizes but not for latitude/longitude of a projected grid. Never fails: what cannot be
- * known is reported in the notices.
+ * {@code GeographicTypeGeoKey} resolved by Apache SIS when it can do so offline (without SIS for a UTM zone of the
+ * common datums, {@link UtmZone}, and for a lat/lon code given with its ellipsoid's axes, {@link #axesEllipsoid});
+ * otherwise what the keys say on their own (model type, {@code ProjLinearUnitsGeoKey}, ellipsoid or datum code or
+ * axes, citations), which is enough for metric cell sizes but not for latitude/longitude of a projected grid. Never
+ * fails: what cannot be known is reported in the notices.
  */
 final class GeoTiffCrs {
 
@@ -60,6 +62,12 @@ final class GeoTiffCrs {
     private static CrsInfo projected(GeoKeyDirectory keys, List<String> notices) {
         Integer code = keys.code(PROJECTED_CS_TYPE).filter(c -> c > 0 && c != USER_DEFINED).orElse(null);
         if (code != null) {
+            Optional<UtmZone> utm = UtmZone.ofEpsg(code);
+            if (utm.isPresent()) {
+                // a UTM zone: metres on a known ellipsoid, without starting Apache SIS (~0.4 s on a cold JVM);
+                // latitude/longitude resolve the code when asked for (GridGeometry.geoLocator)
+                return utm.get().crsInfo();
+            }
             Optional<CrsInfo> sis = CrsResolver.fromEpsg(code);
             if (sis.isPresent() && sis.get().kind() == CrsInfo.Kind.PROJECTED) {
                 return sis.get();

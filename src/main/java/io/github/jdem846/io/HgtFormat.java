@@ -1,8 +1,6 @@
 package io.github.jdem846.io;
 
 import io.github.jdem846.geo.CrsInfo;
-import io.github.jdem846.geo.CrsResolver;
-import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.raster.PixelAnchor;
@@ -52,7 +50,7 @@ final class HgtFormat {
                     + (1201L * 1201 * 2) + " (3″) or 3601 × 3601 × 2 = " + (3601L * 3601 * 2) + " (1″) bytes");
         }
         double cell = 1.0 / (n - 1);
-        CrsInfo crs = CrsResolver.fromEpsg(4326).orElse(CrsInfo.geographic("WGS 84", 4326, Ellipsoid.WGS84));
+        CrsInfo crs = CrsInfo.WGS84;
         GridGeometry g = new GridGeometry(n, n, lon - cell / 2, lat + 1 + cell / 2, cell, cell, crs,
                 PixelAnchor.CENTER);
         DemInfo info = new DemInfo(hgt.toString(), DemFormat.SRTM_HGT, SampleType.INT16, 1, g, -32768.0, List.of());

@@ -2,7 +2,6 @@ package io.github.jdem846.io;
 
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.CrsResolver;
-import io.github.jdem846.geo.Ellipsoid;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -65,8 +64,7 @@ final class SidecarCrs {
         if (degrees) {
             notices.add(why + ": assumed geographic WGS 84, because the extent fits in ±180°/±90° and cells are at"
                     + " most 1 unit");
-            CrsInfo wgs84 = CrsResolver.fromEpsg(4326).orElse(CrsInfo.geographic("WGS 84", 4326, Ellipsoid.WGS84));
-            return wgs84.asAssumed();
+            return CrsInfo.WGS84.asAssumed();
         }
         notices.add(why + ": the CRS is unknown, so cell sizes in metres are unknown");
         return CrsInfo.UNKNOWN;

@@ -1,6 +1,7 @@
 package io.github.jdem846.raster;
 
 import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.geo.CrsResolver;
 import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.geo.GeoLocator;
 import io.github.jdem846.geo.LatLon;
@@ -193,12 +194,13 @@ public final class GridGeometry {
 
     /**
      * The latitude/longitude locator of this grid's CRS (built once), or empty when the CRS cannot be located
-     * (see {@link GeoLocator#forCrs}).
+     * (see {@link GeoLocator#forCrs}). A projected CRS a reader kept only as its EPSG code (a UTM zone) is resolved
+     * by Apache SIS here, on first use.
      */
     public Optional<GeoLocator> geoLocator() {
         Optional<GeoLocator> l = locator;
         if (l == null) {
-            l = GeoLocator.forCrs(crs);
+            l = GeoLocator.forCrs(crs.kind() == CrsInfo.Kind.PROJECTED ? CrsResolver.complete(crs) : crs);
             locator = l;
         }
         return l;
