@@ -280,14 +280,82 @@ final class SunSweep {
         int walk = w.iTop - w.wi0 + 1;
         Line a = new Line(cols, walk);
         Line b = new Line(cols, walk);
+        boolean[] own = new boolean[cols];
+        double[] stripPos = new double[walk];
         walkLine(w, kFrom, a);
         for (int k = kFrom; k <= kTo; k++) {
             walkLine(w, k + 1, b);
-            band(w, k, a, b);
+            walkStrip(w, k, own, stripPos);
+            band(w, k, a, b, own);
             Line t = a;
             a = b;
             b = t;
         }
+    }
+
+    /**
+     * Walks the strip between lines k and k + 1 from iTop down to the window and stores in {@code blocked}, per
+     * window column, whether the strip's cell there is shaded by its own-ray sample ({@link StripHull}, {@link
+     * Strips}): with one step length and no curvature by exactly the lockstep path's arithmetic; otherwise with x =
+     * the distance along the strip (summed row by row along its cells), the rise tan·d and curvature.
+     */
+    private void walkStrip(Window w, int k, boolean[] blocked, double[] pos) {
+        int wi0 = w.wi0;
+        int wi1 = w.wi1;
+        if (f.curvature == 0 && uniformStep == uniformStep) {
+            double drop = f.tanElevation * uniformStep;
+            Strips one = new Strips(1);
+            for (int i = w.iTop; i >= wi0; i--) {
+                int j = stripCell(k, i);
+                if (i <= wi1) {
+                    double z0 = j >= 0 && j < nMin ? v[idx(i, j)] : Double.NaN;
+                    double phi = pr[i] > 0 ? 1 - pr[i] : 0;
+                    blocked[i - wi0] = z0 == z0 && one.blocks(this, 0, k, i, phi, z0, drop);
+                }
+                one.step(0, i, around(i, j), drop);
+            }
+            return;
+        }
+        double tan = f.tanElevation;
+        double bc = f.curvature;
+        StripHull hull = new StripHull();
+        double best = Double.NEGATIVE_INFINITY;     // max of bound + tan·x over the hull's points
+        double prevVal = Double.NEGATIVE_INFINITY;
+        double prevAround = Double.NEGATIVE_INFINITY;
+        for (int i = w.iTop; i >= wi0; i--) {
+            int j = stripCell(k, i);
+            int at = i - wi0;
+            pos[at] = i == w.iTop ? 0 : pos[at + 1] + f.metresPerStep[rowOf(i, Math.max(0, Math.min(nMin - 1, j)))];
+            double x = pos[at];
+            if (i <= wi1) {
+                double z0 = j >= 0 && j < nMin ? v[idx(i, j)] : Double.NaN;
+                boolean b = false;
+                if (z0 == z0 && best - tan * x > z0) {
+                    int iStar = hull.tangent(x, z0);
+                    double phi = pr[i] > 0 ? 1 - pr[i] : 0;
+                    double t = pr[iStar] + phi;
+                    int ft = t >= 1 ? 1 : 0;
+                    double z = sampleAt(iStar, k + pf[iStar] + ft, t - ft);
+                    double dist = x - pos[iStar - wi0];
+                    b = z == z && z - bc * dist * dist > z0 + dist * tan;
+                }
+                blocked[at] = b;
+            }
+            if (prevAround > Double.NEGATIVE_INFINITY) {
+                hull.push(pos[at + 1], prevAround, i + 1);
+                if (prevVal > best) {
+                    best = prevVal;
+                }
+            }
+            double a = around(i, j);
+            prevAround = a;
+            prevVal = a + tan * x;
+        }
+    }
+
+    /** The cell of the strip between lines k and k + 1 at major index i (on line k when it passes a centre). */
+    private int stripCell(int k, int i) {
+        return k + pf[i] + (pr[i] > 0 ? 1 : 0);
     }
 
     /** The terrain on line k at major index i (NaN = no-data or off the grid). */
@@ -573,6 +641,7 @@ final class SunSweep {
         double[] h = new double[lines];
         java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
         java.util.Arrays.fill(prev, Double.NEGATIVE_INFINITY);
+        Strips strips = new Strips(lines - 1);
         if (iStart == nMaj - 1 && upstreamEdgeSample) {
             for (int q = 0; q < lines; q++) {
                 prev[q] = edgeStart(kFrom + q, drop);
@@ -629,17 +698,30 @@ final class SunSweep {
             for (int q = Math.max(qb + 1, Math.max(qa, 0)); q < lines; q++) {
                 advance(best, prev, h, q, lineSample(kFrom + q, i), drop);
             }
-            if (i > wi1) {
-                continue;
-            }
             // cells j = kFrom + q + pfi + c between lines q and q + 1, q = 0 … lines − 2
             int c = fr > 0 ? 1 : 0;
             double phi = fr > 0 ? 1 - fr : 0;
             int off = kFrom + pfi + c;
-            int q0 = Math.max(0, wj0 - off);
-            int q1 = Math.min(lines - 2, wj1 - off);
+            if (i <= wi1) {
+                evaluateLockstep(w, kFrom, i, off, phi, lines, h, strips, drop, dTan, tFirst);
+            }
+            strips.advance(this, i, off, drop);
+        }
+    }
+
+    /** The cells of the window at major index i between the lines of a lockstep block (see bandsUniformHard). */
+    private void evaluateLockstep(Window w, int kFrom, int i, int off, double phi, int lines, double[] h,
+                                  Strips strips, double drop, double dTan, double tFirst) {
+        float[] out = w.out;
+        CellWindow win = w.win;
+        int outStrideJ = rj * win.width() + cj;
+        int sj = strideJ;
+        int base = baseI[i];
+        {
+            int q0 = Math.max(0, w.wj0 - off);
+            int q1 = Math.min(lines - 2, w.wj1 - off);
             if (q0 > q1) {
-                continue;
+                return;
             }
             int outBase = (r0 + ri * i - win.row()) * win.width() + (c0 + ci * i - win.col());
             boolean inner = i + 1 < nMaj;
@@ -655,6 +737,7 @@ final class SunSweep {
                 float result = 0f;
                 if (z0 == z0) {
                     boolean shadow = between(h[q], h[q + 1], phi, uniformFloor) > z0
+                            || strips.blocks(this, q, kFrom + q, i, phi, z0, drop)
                             || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
                     result = shadow ? 1f : 0f;
                 }
@@ -672,6 +755,155 @@ final class SunSweep {
                 }
                 out[outBase + outStrideJ * j] = result;
             }
+        }
+    }
+
+    /**
+     * The terrain a cell's own ray meets at major index {@code iStar}, on the line position k + φ (φ = the cell's
+     * fraction between lines k and k + 1, its offset across the sun direction, the same at every major index),
+     * less the ray's rise over the {@code iStar − i} steps: one sample of the cell's own march, read as the lines
+     * read theirs. {@code −∞} when there is none (no index, off the grid, no-data).
+     */
+    private double ownSample(int k, int i, double phi, int iStar, double drop) {
+        if (iStar < 0) {
+            return Double.NEGATIVE_INFINITY;
+        }
+        double t = pr[iStar] + phi;
+        int ft = t >= 1 ? 1 : 0;
+        double z = sampleAt(iStar, k + pf[iStar] + ft, t - ft);
+        return z == z ? z - (iStar - i) * drop : Double.NEGATIVE_INFINITY;
+    }
+
+    /**
+     * The highest of cells s − 1, s and s + 1 at major index i that lie in [0, cellHi] and hold data ({@code −∞}
+     * when none): a bound on every sample {@link #sampleAt} takes between positions s − 1 and s + 1.
+     */
+    private double around(int i, int s) {
+        double mx = Double.NEGATIVE_INFINITY;
+        int lo = Math.max(s - 1, 0);
+        int hi = Math.min(s + 1, cellHi);
+        for (int j = lo, at = baseI[i] + strideJ * lo; j <= hi; j++, at += strideJ) {
+            double z = v[at];
+            if (z > mx) {
+                mx = z;
+            }
+        }
+        return mx;
+    }
+
+    /**
+     * The upper convex hull of a strip's terrain bounds ({@link #around}) upstream of the current cell, as points
+     * (x, bound) with x growing downstream: −i on a grid with one step length, else the distance along the strip.
+     * For a cell at x its tangent point is the sample of the steepest bound as seen from the cell, (bound −
+     * z₀)/(x − xᵢ): the cell's own ray is tested there ({@link #ownSample}). The lines, which pass up to a cell to
+     * either side, see a thin feature (a one-cell spike, a narrow ridge across the sun) only partly, and their
+     * interpolated shadow height then falls short of it; the own-ray sample is one the cell's own march takes, so
+     * it never shades a cell that march leaves lit. The choice does not depend on the sun's elevation, so raising
+     * the sun never adds shadow; and a window whose halo holds every sample above the cell's ray chooses the same
+     * point as the whole grid (a steeper point beyond the halo is below the ray, and then so is everything else).
+     */
+    private static final class StripHull {
+        private double[] x = new double[16];
+        private double[] z = new double[16];
+        private int[] at = new int[16];
+        private int size;
+
+        /** Adds point (px, pz) of major index i; px must exceed every x added before. */
+        void push(double px, double pz, int i) {
+            while (size >= 2 && cross(size - 2, size - 1, px, pz) >= 0) {
+                size--;
+            }
+            if (size == x.length) {
+                x = java.util.Arrays.copyOf(x, 2 * size);
+                z = java.util.Arrays.copyOf(z, 2 * size);
+                at = java.util.Arrays.copyOf(at, 2 * size);
+            }
+            x[size] = px;
+            z[size] = pz;
+            at[size] = i;
+            size++;
+        }
+
+        /** (b − a) × (q − a) for hull points a, b: ≥ 0 when q is on or above the line through them. */
+        private double cross(int a, int b, double qx, double qz) {
+            return (x[b] - x[a]) * (qz - z[a]) - (z[b] - z[a]) * (qx - x[a]);
+        }
+
+        /**
+         * The major index of the point that maximises (bound − qz)/(qx − x) for qx beyond every point, −1 when the
+         * hull is empty: the first point whose next edge's line passes on or below (qx, qz).
+         */
+        int tangent(double qx, double qz) {
+            if (size == 0) {
+                return -1;
+            }
+            int lo = 0;
+            int hi = size - 1;
+            while (lo < hi) {
+                int mid = (lo + hi) >>> 1;
+                if (cross(mid, mid + 1, qx, qz) >= 0) {
+                    hi = mid;
+                } else {
+                    lo = mid + 1;
+                }
+            }
+            return at[lo];
+        }
+    }
+
+    /**
+     * Per strip (the cells between two adjacent lines) of a lockstep block: the running maximum of the bounds less
+     * the ray's rise (a cell at or above it cannot be shaded by any sample of its own ray, so the hull is not
+     * asked), the bound of the previous major index waiting for its second step, and the hull.
+     */
+    private static final class Strips {
+        final double[] bound;
+        final double[] prev;
+        final double[] prevAround;
+        final StripHull[] hull;
+
+        Strips(int n) {
+            bound = new double[Math.max(n, 0)];
+            prev = new double[bound.length];
+            prevAround = new double[bound.length];
+            hull = new StripHull[bound.length];
+            java.util.Arrays.fill(bound, Double.NEGATIVE_INFINITY);
+            java.util.Arrays.fill(prev, Double.NEGATIVE_INFINITY);
+            java.util.Arrays.fill(prevAround, Double.NEGATIVE_INFINITY);
+            for (int q = 0; q < hull.length; q++) {
+                hull[q] = new StripHull();
+            }
+        }
+
+        /** Takes major index i, whose strip q holds cell off + q, and moves one step downstream. */
+        void advance(SunSweep sweep, int i, int off, double drop) {
+            for (int q = 0; q < bound.length; q++) {
+                step(q, i, sweep.around(i, off + q), drop);
+            }
+        }
+
+        /** One step of strip q: the bound of i + 1 joins (running maximum and hull), that of i waits a step. */
+        void step(int q, int i, double around, double drop) {
+            double b = bound[q];
+            double p = prev[q];
+            if (p > b) {
+                b = p;
+            }
+            if (prevAround[q] > Double.NEGATIVE_INFINITY) {
+                hull[q].push(-(i + 1), prevAround[q], i + 1);
+            }
+            bound[q] = b - drop;
+            prev[q] = around - drop;
+            prevAround[q] = around;
+        }
+
+        /** True when the own-ray sample of strip q's cell at i, chosen by the hull, is above the cell. */
+        boolean blocks(SunSweep sweep, int q, int k, int i, double phi, double z0, double drop) {
+            if (!(bound[q] > z0)) {
+                return false;
+            }
+            int iStar = hull[q].tangent(-i, z0);
+            return sweep.ownSample(k, i, phi, iStar, drop) > z0;
         }
     }
 
@@ -710,7 +942,7 @@ final class SunSweep {
     }
 
     /** Evaluates the cells between lines k and k + 1. */
-    private void band(Window w, int k, Line a, Line b) {
+    private void band(Window w, int k, Line a, Line b, boolean[] own) {
         int iLo = w.wi0;
         int iHi = w.wi1;
         if (m > 0) {
@@ -734,7 +966,8 @@ final class SunSweep {
             } else {
                 double ha = a.height[at];
                 double hb = b.height[at];
-                boolean lines = j >= jTraced ? rayBlockedToEdge(i, j, z0) : between(ha, hb, phi, floorOfRow[rowOf(i, j)]) > z0;
+                boolean lines = j >= jTraced ? rayBlockedToEdge(i, j, z0)
+                        : between(ha, hb, phi, floorOfRow[rowOf(i, j)]) > z0 || own[at];
                 result = (lines || localBlocked(i, j, z0)) ? 1f : 0f;
             }
             int col = c0 + ci * i + cj * j;
