@@ -647,12 +647,7 @@ final class SunSweep {
                 prev[q] = edgeStart(kFrom + q, drop);
             }
         }
-        float[] out = w.out;
-        CellWindow win = w.win;
-        int outStrideJ = rj * win.width() + cj;
         int wi1 = w.wi1;
-        int wj0 = w.wj0;
-        int wj1 = w.wj1;
         int sj = strideJ;
         for (int i = iStart; i >= iEnd; i--) {
             int pfi = pf[i];
