@@ -110,7 +110,7 @@ public enum ShadowAlgorithm {
         RayFrame frame = new RayFrame(dem, light, options);
         boolean bilinear = options.sampling() != Sampling.NEAREST;
         SunSweep sweep = new SunSweep(dem, frame, bilinear, bilinear && options.firstCellTest(), true,
-                options.terrainMinimum());
+                options.terrainMinimum(), options.thinFeatures());
         int halo = window.width() == dem.width() && window.height() == dem.height() ? Integer.MAX_VALUE
                 : ShadowHalo.sweepSteps(frame, sweep.lowestFloor(), light, options);
         sweep.run(window, halo, out, pool);

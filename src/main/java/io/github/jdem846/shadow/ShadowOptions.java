@@ -22,10 +22,14 @@ import java.util.Objects;
  *                              NaN = the grid's own. A grid read as a window of a file, with the halo of {@link
  *                              ShadowHalo#window}, gives exactly the whole file's mask in that window when this is
  *                              the file's minimum (the sweep ignores line heights below it, see {@code SunSweep})
+ * @param thinFeatures          {@code sweep} only: also test each cell's own ray at the steepest terrain of its
+ *                              strip, so that features one or two cells wide (a pole, a tree, a narrow ridge
+ *                              across the sun) cast their whole shadow off the grid axes, as the marches see them;
+ *                              off by default: it costs about 2–3 times the sweep's time (docs/shadows.md)
  */
 public record ShadowOptions(StepSize step, Sampling sampling, boolean firstCellTest, boolean softShadows,
                             double sunDiameterDegrees, boolean earthCurvature, double refractionCoefficient,
-                            double earthRadiusMeters, double terrainMinimum) {
+                            double earthRadiusMeters, double terrainMinimum, boolean thinFeatures) {
 
     /** Apparent diameter of the sun, degrees. */
     public static final double SUN_DIAMETER_DEGREES = 0.53;
@@ -34,7 +38,7 @@ public record ShadowOptions(StepSize step, Sampling sampling, boolean firstCellT
 
     /** Hard shadows, article step, automatic sampling, first-cell test on, no curvature. */
     public static final ShadowOptions DEFAULTS = new ShadowOptions(StepSize.ARTICLE, Sampling.AUTO, true, false,
-            SUN_DIAMETER_DEGREES, false, REFRACTION_COEFFICIENT, Double.NaN, Double.NaN);
+            SUN_DIAMETER_DEGREES, false, REFRACTION_COEFFICIENT, Double.NaN, Double.NaN, false);
 
     public ShadowOptions {
         Objects.requireNonNull(step, "step");
@@ -59,34 +63,34 @@ public record ShadowOptions(StepSize step, Sampling sampling, boolean firstCellT
 
     public ShadowOptions withStep(StepSize s) {
         return new ShadowOptions(s, sampling, firstCellTest, softShadows, sunDiameterDegrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters, terrainMinimum);
+                refractionCoefficient, earthRadiusMeters, terrainMinimum, thinFeatures);
     }
 
     public ShadowOptions withSampling(Sampling s) {
         return new ShadowOptions(step, s, firstCellTest, softShadows, sunDiameterDegrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters, terrainMinimum);
+                refractionCoefficient, earthRadiusMeters, terrainMinimum, thinFeatures);
     }
 
     public ShadowOptions withFirstCellTest(boolean on) {
         return new ShadowOptions(step, sampling, on, softShadows, sunDiameterDegrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters, terrainMinimum);
+                refractionCoefficient, earthRadiusMeters, terrainMinimum, thinFeatures);
     }
 
     /** Soft shadows from a sun disk of {@link #sunDiameterDegrees()}. */
     public ShadowOptions withSoftShadows(boolean on) {
         return new ShadowOptions(step, sampling, firstCellTest, on, sunDiameterDegrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters, terrainMinimum);
+                refractionCoefficient, earthRadiusMeters, terrainMinimum, thinFeatures);
     }
 
     public ShadowOptions withSunDiameter(double degrees) {
         return new ShadowOptions(step, sampling, firstCellTest, softShadows, degrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters, terrainMinimum);
+                refractionCoefficient, earthRadiusMeters, terrainMinimum, thinFeatures);
     }
 
     /** Curvature and refraction on or off, with the given k and radius (NaN = the grid's ellipsoid). */
     public ShadowOptions withEarthCurvature(boolean on, double k, double radiusMeters) {
         return new ShadowOptions(step, sampling, firstCellTest, softShadows, sunDiameterDegrees, on, k,
-                radiusMeters, terrainMinimum);
+                radiusMeters, terrainMinimum, thinFeatures);
     }
 
     /** Curvature and refraction on or off with k = 0.13 and the grid's ellipsoid. */
@@ -100,6 +104,12 @@ public record ShadowOptions(StepSize step, Sampling sampling, boolean firstCellT
      */
     public ShadowOptions withTerrainMinimum(double z) {
         return new ShadowOptions(step, sampling, firstCellTest, softShadows, sunDiameterDegrees, earthCurvature,
-                refractionCoefficient, earthRadiusMeters, z);
+                refractionCoefficient, earthRadiusMeters, z, thinFeatures);
+    }
+
+    /** The sweep's own-ray test for thin features ({@link #thinFeatures()}) on or off. */
+    public ShadowOptions withThinFeatures(boolean on) {
+        return new ShadowOptions(step, sampling, firstCellTest, softShadows, sunDiameterDegrees, earthCurvature,
+                refractionCoefficient, earthRadiusMeters, terrainMinimum, on);
     }
 }

@@ -92,21 +92,25 @@ final class SunSweep {
 
     /** When false, every case takes the line-by-line path ({@link #bands}): the reference of the tests. */
     private final boolean lockstepAllowed;
+    /** Each cell also tests one sample of its own ray ({@link StripHull}). */
+    private final boolean thinFeatures;
 
     SunSweep(Dem dem, RayFrame frame, boolean bilinear, boolean firstCellTest) {
         this(dem, frame, bilinear, firstCellTest, true);
     }
 
     SunSweep(Dem dem, RayFrame frame, boolean bilinear, boolean firstCellTest, boolean lockstepAllowed) {
-        this(dem, frame, bilinear, firstCellTest, lockstepAllowed, Double.NaN);
+        this(dem, frame, bilinear, firstCellTest, lockstepAllowed, Double.NaN, false);
     }
 
     /**
      * @param terrainMinimum the lowest elevation of the file {@code dem} was read from (NaN = the grid's own): the
      *                       floor below which a line counts as no terrain starts there
+     * @param thinFeatures   also test each cell's own ray at its strip's steepest terrain ({@link StripHull})
      */
     SunSweep(Dem dem, RayFrame frame, boolean bilinear, boolean firstCellTest, boolean lockstepAllowed,
-             double terrainMinimum) {
+             double terrainMinimum, boolean thinFeatures) {
+        this.thinFeatures = thinFeatures;
         if (frame.soft()) {
             throw new IllegalArgumentException("the sweep traces hard shadows; soft shadows are built from hard sweeps"
                     + " at angles across the sun's disk (ShadowAlgorithm)");
@@ -285,7 +289,9 @@ final class SunSweep {
         walkLine(w, kFrom, a);
         for (int k = kFrom; k <= kTo; k++) {
             walkLine(w, k + 1, b);
-            walkStrip(w, k, own, stripPos);
+            if (thinFeatures) {
+                walkStrip(w, k, own, stripPos);
+            }
             band(w, k, a, b, own);
             Line t = a;
             a = b;
@@ -305,14 +311,18 @@ final class SunSweep {
         if (f.curvature == 0 && uniformStep == uniformStep) {
             double drop = f.tanElevation * uniformStep;
             Strips one = new Strips(1);
+            int rTop = Math.min(w.iTop, nMaj - 1);
             for (int i = w.iTop; i >= wi0; i--) {
-                int j = stripCell(k, i);
+                int r = i + 2;
+                if (r <= rTop) {
+                    one.take(0, r, around(r, stripCell(k, r)), drop);
+                }
                 if (i <= wi1) {
+                    int j = stripCell(k, i);
                     double z0 = j >= 0 && j < nMin ? v[idx(i, j)] : Double.NaN;
                     double phi = pr[i] > 0 ? 1 - pr[i] : 0;
                     blocked[i - wi0] = z0 == z0 && one.blocks(this, 0, k, i, phi, z0, drop);
                 }
-                one.step(0, i, around(i, j), drop);
             }
             return;
         }
@@ -641,7 +651,8 @@ final class SunSweep {
         double[] h = new double[lines];
         java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
         java.util.Arrays.fill(prev, Double.NEGATIVE_INFINITY);
-        Strips strips = new Strips(lines - 1);
+        Strips strips = new Strips(thinFeatures ? lines - 1 : 0);
+        int rTop = Math.min(w.iTop, nMaj - 1);
         if (iStart == nMaj - 1 && upstreamEdgeSample) {
             for (int q = 0; q < lines; q++) {
                 prev[q] = edgeStart(kFrom + q, drop);
@@ -697,10 +708,12 @@ final class SunSweep {
             int c = fr > 0 ? 1 : 0;
             double phi = fr > 0 ? 1 - fr : 0;
             int off = kFrom + pfi + c;
+            if (thinFeatures && i + 2 <= rTop) {
+                strips.take(this, i + 2, kFrom, drop);
+            }
             if (i <= wi1) {
                 evaluateLockstep(w, kFrom, i, off, phi, lines, h, strips, drop, dTan, tFirst);
             }
-            strips.advance(this, i, off, drop);
         }
     }
 
@@ -732,7 +745,7 @@ final class SunSweep {
                 float result = 0f;
                 if (z0 == z0) {
                     boolean shadow = between(h[q], h[q + 1], phi, uniformFloor) > z0
-                            || strips.blocks(this, q, kFrom + q, i, phi, z0, drop)
+                            || thinFeatures && strips.blocks(this, q, kFrom + q, i, phi, z0, drop)
                             || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
                     result = shadow ? 1f : 0f;
                 }
@@ -769,21 +782,42 @@ final class SunSweep {
         return z == z ? z - (iStar - i) * drop : Double.NEGATIVE_INFINITY;
     }
 
+    private int hullTangent(StripHull hull, int i, double z0) {
+        return hull.tangent(-i, z0);
+    }
+
+    /** Cell j at major index i, {@code −∞} when outside [0, cellHi] or no-data ({@link #around}'s terms). */
+    private double cellOrNone(int i, int j) {
+        if (j < 0 || j > cellHi) {
+            return Double.NEGATIVE_INFINITY;
+        }
+        double z = v[baseI[i] + strideJ * j];
+        return z == z ? z : Double.NEGATIVE_INFINITY;
+    }
+
     /**
-     * The highest of cells s − 1, s and s + 1 at major index i that lie in [0, cellHi] and hold data ({@code −∞}
-     * when none): a bound on every sample {@link #sampleAt} takes between positions s − 1 and s + 1.
+     * The strip's terrain bound at major index i, whose strip cell is s: the highest of cells s − 1, s and s + 1
+     * ({@link #cellOrNone}), a bound on every sample {@link #sampleAt} takes between positions s − 1 and s + 1; or
+     * {@code −∞} when no own-ray sample there can be above the lines' estimate. The lines pass the row at s − 1 + p
+     * and s + p (p = the row's fraction); a cell between them samples the two segments through s, whose excess over
+     * the chord between the lines' samples is at most p·(1 − p)·(2·z(s) − z(s − 1) − z(s + 1)): nothing when the
+     * lines pass through cell centres (p = 0) or when cell s is not above the mean of its neighbours (then the
+     * cell's own samples lie on or below the chord, and the interpolated shadow height at least as high). A row
+     * with a missing cell is kept.
      */
     private double around(int i, int s) {
-        double mx = Double.NEGATIVE_INFINITY;
-        int lo = Math.max(s - 1, 0);
-        int hi = Math.min(s + 1, cellHi);
-        for (int j = lo, at = baseI[i] + strideJ * lo; j <= hi; j++, at += strideJ) {
-            double z = v[at];
-            if (z > mx) {
-                mx = z;
-            }
+        return pr[i] > 0 ? bound(cellOrNone(i, s - 1), cellOrNone(i, s), cellOrNone(i, s + 1))
+                : Double.NEGATIVE_INFINITY;
+    }
+
+    /** {@link #around} from the three cells ({@code −∞} = none). */
+    private static double bound(double a, double b, double c) {
+        boolean all = a > Double.NEGATIVE_INFINITY && b > Double.NEGATIVE_INFINITY && c > Double.NEGATIVE_INFINITY;
+        if (all && 2 * b <= a + c) {
+            return Double.NEGATIVE_INFINITY;
         }
-        return mx;
+        double mx = a >= b ? a : b;
+        return mx >= c ? mx : c;
     }
 
     /**
@@ -847,57 +881,61 @@ final class SunSweep {
     }
 
     /**
-     * Per strip (the cells between two adjacent lines) of a lockstep block: the running maximum of the bounds less
-     * the ray's rise (a cell at or above it cannot be shaded by any sample of its own ray, so the hull is not
-     * asked), the bound of the previous major index waiting for its second step, and the hull.
+     * Per strip (the cells between two adjacent lines): the hull of its terrain bounds ({@link #around}) two or
+     * more major steps upstream, and the highest of bound − i·drop over them: a cell at i below that plus i·drop
+     * cannot be shaded by any sample of its own ray, so the hull is not asked. Rows whose bound is {@code −∞} cost
+     * one test and nothing else.
      */
     private static final class Strips {
-        final double[] bound;
-        final double[] prev;
-        final double[] prevAround;
+        final double[] best;
         final StripHull[] hull;
 
         Strips(int n) {
-            bound = new double[Math.max(n, 0)];
-            prev = new double[bound.length];
-            prevAround = new double[bound.length];
-            hull = new StripHull[bound.length];
-            java.util.Arrays.fill(bound, Double.NEGATIVE_INFINITY);
-            java.util.Arrays.fill(prev, Double.NEGATIVE_INFINITY);
-            java.util.Arrays.fill(prevAround, Double.NEGATIVE_INFINITY);
+            best = new double[Math.max(n, 0)];
+            hull = new StripHull[best.length];
+            java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
             for (int q = 0; q < hull.length; q++) {
                 hull[q] = new StripHull();
             }
         }
 
-        /** Takes major index i, whose strip q holds cell off + q, and moves one step downstream. */
-        void advance(SunSweep sweep, int i, int off, double drop) {
-            for (int q = 0; q < bound.length; q++) {
-                step(q, i, sweep.around(i, off + q), drop);
+        /** Takes row r of every strip of a lockstep block whose first line is kFrom. */
+        void take(SunSweep sweep, int r, int kFrom, double drop) {
+            int n = best.length;
+            if (n == 0 || !(sweep.pr[r] > 0)) {
+                return;   // the lines pass through cell centres: no bound (see around)
+            }
+            int off = kFrom + sweep.pf[r] + 1;
+            double left = sweep.cellOrNone(r, off - 1);
+            double centre = sweep.cellOrNone(r, off);
+            for (int q = 0; q < n; q++) {
+                double right = sweep.cellOrNone(r, off + q + 1);
+                double b = bound(left, centre, right);
+                if (b > Double.NEGATIVE_INFINITY) {
+                    take(q, r, b, drop);
+                }
+                left = centre;
+                centre = right;
             }
         }
 
-        /** One step of strip q: the bound of i + 1 joins (running maximum and hull), that of i waits a step. */
-        void step(int q, int i, double around, double drop) {
-            double b = bound[q];
-            double p = prev[q];
-            if (p > b) {
-                b = p;
+        /** Takes the bound of strip q at row r ({@code −∞}: nothing). */
+        void take(int q, int r, double around, double drop) {
+            if (around > Double.NEGATIVE_INFINITY) {
+                hull[q].push(-r, around, r);
+                double key = around - drop * r;
+                if (key > best[q]) {
+                    best[q] = key;
+                }
             }
-            if (prevAround[q] > Double.NEGATIVE_INFINITY) {
-                hull[q].push(-(i + 1), prevAround[q], i + 1);
-            }
-            bound[q] = b - drop;
-            prev[q] = around - drop;
-            prevAround[q] = around;
         }
 
         /** True when the own-ray sample of strip q's cell at i, chosen by the hull, is above the cell. */
         boolean blocks(SunSweep sweep, int q, int k, int i, double phi, double z0, double drop) {
-            if (!(bound[q] > z0)) {
+            if (!(best[q] + drop * i > z0)) {
                 return false;
             }
-            int iStar = hull[q].tangent(-i, z0);
+            int iStar = sweep.hullTangent(hull[q], i, z0);
             return sweep.ownSample(k, i, phi, iStar, drop) > z0;
         }
     }

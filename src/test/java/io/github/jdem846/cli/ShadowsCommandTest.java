@@ -6,9 +6,12 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.io.DemReader;
+import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.FileWindowCase;
+import io.github.jdem846.shadow.ShadowAlgorithm;
+import io.github.jdem846.shadow.ShadowOptions;
 import java.awt.image.BufferedImage;
 import java.awt.image.Raster;
 import java.io.IOException;
@@ -229,6 +232,25 @@ class ShadowsCommandTest {
                 assertEquals(soft[i] > 127 ? 255 : 0, hard[i], "cell " + i + ": soft " + soft[i]);
             }
         }
+    }
+
+    @Test
+    void thinFeaturesOnlyAddTheLibrarysOwnRayShadows() throws IOException {
+        // --thin-features is the library's ShadowOptions.withThinFeatures(true): the mask equals it byte for byte,
+        // and it only adds shadow to the plain sweep (one more sample of each cell's own ray)
+        int[] plain = mask(JACKSBORO, "plain.png", "--sun-azimuth", "250", "--sun-elevation", "8");
+        int[] thin = mask(JACKSBORO, "thin.png", "--sun-azimuth", "250", "--sun-elevation", "8", "--thin-features");
+        Dem dem = DemReader.read(Path.of(JACKSBORO));
+        float[] lib = ShadowAlgorithm.SWEEP.compute(dem, new LightDirection(250, 8),
+                ShadowOptions.DEFAULTS.withThinFeatures(true), new java.util.concurrent.ForkJoinPool(2))
+                .backingArray();
+        long added = 0;
+        for (int i = 0; i < thin.length; i++) {
+            assertEquals(lib[i] > 0.5f ? 255 : 0, thin[i], "cell " + i);
+            assertTrue(thin[i] >= plain[i], "cell " + i + " lost shadow");
+            added += thin[i] > plain[i] ? 1 : 0;
+        }
+        assertTrue(added > 0, "some cell of Pine Mountain's ridges must gain shadow");
     }
 
     @Test

@@ -73,9 +73,12 @@ public record FileWindowCase(Dem dem, LightDirection light, CellWindow window, C
                 window.height());
     }
 
-    /** Cells of the window where the sweep of the loaded grid with {@code options} differs from the whole file's. */
+    /**
+     * Cells of the window where the sweep of the loaded grid with {@code options} differs from the whole file's
+     * (with the same options, less the terrain minimum: the whole file has its own).
+     */
     public int differences(ShadowOptions options, ForkJoinPool pool) {
-        ShadowMask whole = ShadowAlgorithm.SWEEP.compute(dem, light, ShadowOptions.DEFAULTS, pool);
+        ShadowMask whole = ShadowAlgorithm.SWEEP.compute(dem, light, options.withTerrainMinimum(Double.NaN), pool);
         ShadowMask part = ShadowAlgorithm.SWEEP.computeWindow(loadedGrid(), light, options, pool, windowInLoaded());
         int differ = 0;
         for (int r = 0; r < window.height(); r++) {

@@ -28,6 +28,8 @@ import org.junit.jupiter.api.Test;
  */
 class SunSweepConsistencyTest {
 
+    private static final ShadowOptions THIN = ShadowOptions.DEFAULTS.withThinFeatures(true);
+
     private static final String[] REAL_DEMS = {"bigtujunga_srtm30m_utm11n", "jacksboro_srtm3s_wgs84",
         "luxembourg_srtm30s_wgs84", "maungawhau-volcano_10m_nztm-approx",
         "vancouver-island_topobathy_2min_mercator"};
@@ -61,7 +63,8 @@ class SunSweepConsistencyTest {
                                  ForkJoinPool pool) {
         float[] out = new float[dem.width() * dem.height()];
         RayFrame frame = new RayFrame(dem, light, options);
-        new SunSweep(dem, frame, options.sampling() != Sampling.NEAREST, options.firstCellTest(), lockstep)
+        new SunSweep(dem, frame, options.sampling() != Sampling.NEAREST, options.firstCellTest(), lockstep,
+                options.terrainMinimum(), options.thinFeatures())
                 .run(CellWindow.whole(dem.width(), dem.height()), Integer.MAX_VALUE, out, pool);
         return out;
     }
@@ -85,9 +88,13 @@ class SunSweepConsistencyTest {
             for (double e : ELEVATIONS) {
                 for (double a : AZIMUTHS) {
                     LightDirection light = new LightDirection(a, e);
+                    for (ShadowOptions o : new ShadowOptions[] {ShadowOptions.DEFAULTS, THIN}) {
+                        float[] fast = sweep(dem, light, o, true, two);
+                        float[] reference = sweep(dem, light, o, false, one);
+                        assertEquals(0, differences(fast, reference), name + " az " + a + " el " + e + " thin "
+                                + o.thinFeatures());
+                    }
                     float[] fast = sweep(dem, light, ShadowOptions.DEFAULTS, true, two);
-                    float[] reference = sweep(dem, light, ShadowOptions.DEFAULTS, false, one);
-                    assertEquals(0, differences(fast, reference), name + " az " + a + " el " + e);
                     for (float s : fast) {
                         shadowed += s >= 0.5f ? 1 : 0;
                     }
@@ -105,9 +112,12 @@ class SunSweepConsistencyTest {
         for (int t = 0; t < 60; t++) {
             Dem dem = synthetic(rnd, false);
             LightDirection light = new LightDirection(t * 6 + rnd.nextDouble() * 6, 0.5 + rnd.nextDouble() * 60);
-            float[] fast = sweep(dem, light, ShadowOptions.DEFAULTS, true, three);
-            float[] reference = sweep(dem, light, ShadowOptions.DEFAULTS, false, one);
-            assertEquals(0, differences(fast, reference), "trial " + t + " " + light);
+            for (ShadowOptions o : new ShadowOptions[] {ShadowOptions.DEFAULTS, THIN}) {
+                float[] fast = sweep(dem, light, o, true, three);
+                float[] reference = sweep(dem, light, o, false, one);
+                assertEquals(0, differences(fast, reference), "trial " + t + " " + light + " thin "
+                        + o.thinFeatures());
+            }
         }
     }
 
@@ -159,6 +169,7 @@ class SunSweepConsistencyTest {
                 for (double a : AZIMUTHS) {
                     LightDirection light = new LightDirection(a, e);
                     assertWindowsMatch(dem, light, ShadowOptions.DEFAULTS, rnd, 3, name);
+                    assertWindowsMatch(dem, light, THIN, rnd, 1, name + " thin features");
                 }
             }
         }
@@ -177,6 +188,9 @@ class SunSweepConsistencyTest {
             ShadowOptions options = rnd.nextInt(4) == 0
                     ? ShadowOptions.DEFAULTS.withEarthCurvature(true, 0.13, 1e5) : ShadowOptions.DEFAULTS;
             assertWindowsMatch(dem, light, options, rnd, 10, "trial " + t);
+            if (t % 2 == 0) {
+                assertWindowsMatch(dem, light, options.withThinFeatures(true), rnd, 5, "thin features, trial " + t);
+            }
         }
     }
 
@@ -194,6 +208,10 @@ class SunSweepConsistencyTest {
                 ShadowOptions told = ShadowOptions.DEFAULTS.withTerrainMinimum(c.dem().statistics().min());
                 assertEquals(0, c.differences(told, t % 2 == 0 ? one : two), "trial " + t + " " + c.light() + " "
                         + c.window());
+                if (t % 4 == 0) {
+                    assertEquals(0, c.differences(told.withThinFeatures(true), two), "thin features, trial " + t
+                            + " " + c.light() + " " + c.window());
+                }
                 sensitive += c.differences(ShadowOptions.DEFAULTS, one) > 0 ? 1 : 0;
             }
         }
