@@ -113,6 +113,12 @@ public class RayTraceBenchmark {
         return ShadowAlgorithm.SWEEP.compute(g.grid, g.light, ShadowOptions.DEFAULTS, g.pool);
     }
 
+    /** The sweep with its own-ray test for thin features ({@link ShadowOptions#withThinFeatures}). */
+    @Benchmark
+    public ShadowMask sweepThinFeatures(Grid g) {
+        return ShadowAlgorithm.SWEEP.compute(g.grid, g.light, ShadowOptions.DEFAULTS.withThinFeatures(true), g.pool);
+    }
+
     /** The reference: eighth-cell steps on the bilinear surface. */
     @Benchmark
     public ShadowMask exact(SmallGrid g) {
