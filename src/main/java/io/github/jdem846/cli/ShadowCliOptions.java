@@ -21,7 +21,7 @@ public final class ShadowCliOptions {
     @Option(names = "--thin-features",
             description = "sweep: also test each cell's own ray at the steepest terrain of its strip, so that features "
                     + "one or two cells wide (poles, trees, narrow ridges) cast their whole shadow off the grid axes; "
-                    + "about 2-3 times the sweep's time.")
+                    + "1.6-2.5 times the sweep's time.")
     boolean thinFeatures;
 
     /** The options record (sweep/march defaults otherwise). */

@@ -25,7 +25,7 @@ import java.util.Objects;
  * @param thinFeatures          {@code sweep} only: also test each cell's own ray at the steepest terrain of its
  *                              strip, so that features one or two cells wide (a pole, a tree, a narrow ridge
  *                              across the sun) cast their whole shadow off the grid axes, as the marches see them;
- *                              off by default: it costs about 2–3 times the sweep's time (docs/shadows.md)
+ *                              off by default: it costs 1.6–2.5 times the sweep's time (docs/accuracy.md)
  */
 public record ShadowOptions(StepSize step, Sampling sampling, boolean firstCellTest, boolean softShadows,
                             double sunDiameterDegrees, boolean earthCurvature, double refractionCoefficient,

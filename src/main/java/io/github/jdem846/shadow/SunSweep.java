@@ -29,6 +29,10 @@ import java.util.concurrent.RecursiveAction;
  * the outer half cell. The side of a window that is not the file's edge ({@link GridGeometry#placement()}) reads on
  * as before, so a window equals the whole grid.
  *
+ * <p>Thin features (an option, {@link ShadowOptions#thinFeatures()}): each cell also tests one sample of its own
+ * ray, at the row where the cells between its two lines have the steepest terrain bound as seen from the cell
+ * ({@link StripHull}), so that a feature one cell wide, which the lines see only partly, shades its whole lee.
+ *
  * <p>Work: one sample per line per column plus a constant per cell, whatever the sun elevation. Lines are split
  * into chunks across a ForkJoinPool; every line is computed the same way in any chunk, so the mask does not depend
  * on the thread count.
@@ -725,44 +729,42 @@ final class SunSweep {
         int outStrideJ = rj * win.width() + cj;
         int sj = strideJ;
         int base = baseI[i];
-        {
-            int q0 = Math.max(0, w.wj0 - off);
-            int q1 = Math.min(lines - 2, w.wj1 - off);
-            if (q0 > q1) {
-                return;
+        int q0 = Math.max(0, w.wj0 - off);
+        int q1 = Math.min(lines - 2, w.wj1 - off);
+        if (q0 > q1) {
+            return;
+        }
+        int outBase = (r0 + ri * i - win.row()) * win.width() + (c0 + ci * i - win.col());
+        boolean inner = i + 1 < nMaj;
+        int up = inner ? baseI[i + 1] : 0;
+        // cells whose ray leaves through the file's exit edge within a few steps (j ≥ jTraced) are traced
+        // in a loop of their own, so that the common loop holds no ray march
+        int qEdge = jTraced == Integer.MAX_VALUE ? q1 + 1
+                : (int) Math.max(q0, Math.min(q1 + 1L, (long) jTraced - off));
+        for (int q = q0; q < qEdge; q++) {
+            int j = off + q;
+            int cell = base + sj * j;
+            double z0 = v[cell];
+            float result = 0f;
+            if (z0 == z0) {
+                boolean shadow = between(h[q], h[q + 1], phi, uniformFloor) > z0
+                        || thinFeatures && strips.blocks(this, q, kFrom + q, i, phi, z0, drop)
+                        || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
+                result = shadow ? 1f : 0f;
             }
-            int outBase = (r0 + ri * i - win.row()) * win.width() + (c0 + ci * i - win.col());
-            boolean inner = i + 1 < nMaj;
-            int up = inner ? baseI[i + 1] : 0;
-            // cells whose ray leaves through the file's exit edge within a few steps (j ≥ jTraced) are traced
-            // in a loop of their own, so that the common loop holds no ray march
-            int qEdge = jTraced == Integer.MAX_VALUE ? q1 + 1
-                    : (int) Math.max(q0, Math.min(q1 + 1L, (long) jTraced - off));
-            for (int q = q0; q < qEdge; q++) {
-                int j = off + q;
-                int cell = base + sj * j;
-                double z0 = v[cell];
-                float result = 0f;
-                if (z0 == z0) {
-                    boolean shadow = between(h[q], h[q + 1], phi, uniformFloor) > z0
-                            || thinFeatures && strips.blocks(this, q, kFrom + q, i, phi, z0, drop)
-                            || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
-                    result = shadow ? 1f : 0f;
-                }
-                out[outBase + outStrideJ * j] = result;
+            out[outBase + outStrideJ * j] = result;
+        }
+        for (int q = qEdge; q <= q1; q++) {
+            int j = off + q;
+            int cell = base + sj * j;
+            double z0 = v[cell];
+            float result = 0f;
+            if (z0 == z0) {
+                boolean shadow = rayBlockedToEdge(i, j, z0)
+                        || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
+                result = shadow ? 1f : 0f;
             }
-            for (int q = qEdge; q <= q1; q++) {
-                int j = off + q;
-                int cell = base + sj * j;
-                double z0 = v[cell];
-                float result = 0f;
-                if (z0 == z0) {
-                    boolean shadow = rayBlockedToEdge(i, j, z0)
-                            || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
-                    result = shadow ? 1f : 0f;
-                }
-                out[outBase + outStrideJ * j] = result;
-            }
+            out[outBase + outStrideJ * j] = result;
         }
     }
 
@@ -780,10 +782,6 @@ final class SunSweep {
         int ft = t >= 1 ? 1 : 0;
         double z = sampleAt(iStar, k + pf[iStar] + ft, t - ft);
         return z == z ? z - (iStar - i) * drop : Double.NEGATIVE_INFINITY;
-    }
-
-    private int hullTangent(StripHull hull, int i, double z0) {
-        return hull.tangent(-i, z0);
     }
 
     /** Cell j at major index i, {@code −∞} when outside [0, cellHi] or no-data ({@link #around}'s terms). */
@@ -935,7 +933,7 @@ final class SunSweep {
             if (!(best[q] + drop * i > z0)) {
                 return false;
             }
-            int iStar = sweep.hullTangent(hull[q], i, z0);
+            int iStar = hull[q].tangent(-i, z0);
             return sweep.ownSample(k, i, phi, iStar, drop) > z0;
         }
     }
