@@ -82,6 +82,38 @@ class ShadowStabilityTest {
         });
     }
 
+    @org.junit.jupiter.api.Test
+    void theSweepsThinFeatureOptionSurvivesEveryExtremeCase() {
+        // the option's own-ray samples and hulls on the same extreme DEMs and suns: finite, bounded, no hang, the
+        // short cuts kept; and never less shadow than the plain sweep (it only adds own-ray samples)
+        Map<String, Dem> dems = dems();
+        ShadowOptions thin = ShadowOptions.DEFAULTS.withThinFeatures(true);
+        assertTimeoutPreemptively(Duration.ofSeconds(60), () -> {
+            for (boolean soft : new boolean[] {false, true}) {
+                for (var entry : dems.entrySet()) {
+                    Dem dem = entry.getValue();
+                    for (double e : ELEVATIONS) {
+                        for (double az : AZIMUTHS) {
+                            String what = "thin features " + entry.getKey() + " e=" + e + " az=" + az + " soft="
+                                    + soft;
+                            LightDirection l = new LightDirection(az, e);
+                            ShadowMask m = ShadowAlgorithm.SWEEP.compute(dem, l, thin.withSoftShadows(soft),
+                                    POOL.get());
+                            check(dem, m, e, what);
+                            ShadowMask plain = ShadowAlgorithm.SWEEP.compute(dem, l,
+                                    ShadowOptions.DEFAULTS.withSoftShadows(soft), POOL.get());
+                            for (int i = 0; i < m.backingArray().length; i++) {
+                                if (m.backingArray()[i] < plain.backingArray()[i]) {
+                                    fail(what + ": cell " + i + " has less shadow than the plain sweep");
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        });
+    }
+
     private static void check(Dem dem, ShadowMask m, double e, String what) {
         assertEquals(dem.width(), m.width(), what);
         assertEquals(dem.height(), m.height(), what);
