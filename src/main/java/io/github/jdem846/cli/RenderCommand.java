@@ -74,6 +74,7 @@ public final class RenderCommand implements Callable<Integer> {
         HillshadeMethod method = hillshade.toLowerCase(Locale.ROOT).equals("none") ? null
                 : HillshadeMethod.fromName(hillshade);
         ShadowAlgorithm algorithm = ShadowAlgorithm.parse(shadows);
+        shadowOptions.noteUnused(algorithm, err);
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(method)
                 .withHillshadeOptions(shading.options()).withShadows(algorithm)
                 .withShadowOptions(shadowOptions.options()).withShadowIntensity(shadowIntensity);

@@ -1,6 +1,8 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowOptions;
+import java.io.PrintWriter;
 import picocli.CommandLine.Option;
 
 /** {@code --soft-shadows}, {@code --curvature}, {@code --refraction} and {@code --thin-features}. */
@@ -23,6 +25,14 @@ public final class ShadowCliOptions {
                     + "one or two cells wide (poles, trees, narrow ridges) cast their whole shadow off the grid axes; "
                     + "1.6-2.5 times the sweep's time.")
     boolean thinFeatures;
+
+    /** Says on {@code err} when an option given has no effect with {@code algorithm}. */
+    void noteUnused(ShadowAlgorithm algorithm, PrintWriter err) {
+        if (thinFeatures && algorithm != ShadowAlgorithm.SWEEP) {
+            err.println("jdem846: note: --thin-features changes only the sweep; it has no effect with "
+                    + (algorithm == ShadowAlgorithm.NONE ? "no shadows" : algorithm.cliName()));
+        }
+    }
 
     /** The options record (sweep/march defaults otherwise). */
     ShadowOptions options() {

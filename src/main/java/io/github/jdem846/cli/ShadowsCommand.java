@@ -58,6 +58,7 @@ public final class ShadowsCommand implements Callable<Integer> {
         if (alg == ShadowAlgorithm.NONE) {
             throw new IllegalArgumentException("--algorithm none makes no mask; choose sweep, march or exact");
         }
+        shadowOptions.noteUnused(alg, err);
         Scene scene = Scene.defaults().withTint(null).withHillshade(null).withShadows(alg)
                 .withShadowOptions(shadowOptions.options());
         Scene warmUpScene = scene.withLight(new LightDirection(300, 10));

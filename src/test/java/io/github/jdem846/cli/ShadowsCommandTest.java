@@ -254,6 +254,21 @@ class ShadowsCommandTest {
     }
 
     @Test
+    void thinFeaturesWithAnotherAlgorithmIsNotedAndChangesNothing() throws IOException {
+        Path a = dir.resolve("march.png");
+        Path b = dir.resolve("march-thin.png");
+        CliRun plain = CliRun.of("shadows", LUX, "-o", a.toString(), "--algorithm", "march", "-q");
+        CliRun thin = CliRun.of("shadows", LUX, "-o", b.toString(), "--algorithm", "march", "--thin-features", "-q");
+        assertEquals(0, thin.exitCode(), thin.err());
+        assertTrue(thin.err().contains("--thin-features changes only the sweep"), thin.err());
+        assertFalse(plain.err().contains("--thin-features"), plain.err());
+        assertArrayEquals(Files.readAllBytes(a), Files.readAllBytes(b));
+        CliRun render = CliRun.of("render", LUX, "-o", dir.resolve("r.png").toString(), "--thin-features", "-q");
+        assertEquals(0, render.exitCode(), render.err());
+        assertTrue(render.err().contains("no effect with no shadows"), render.err());
+    }
+
+    @Test
     void curvatureOnlyLowersDistantTerrain() throws IOException {
         // Luxembourg, 30″ cells, ≈ 55 × 83 km; a 1° sun casts shadows over tens of kilometres, where the
         // curvature less refraction, 0.87·d²/(2R), is ≈ 27 m at 20 km: some shadows end sooner, none appear
