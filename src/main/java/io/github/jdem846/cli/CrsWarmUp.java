@@ -14,7 +14,8 @@ import java.util.Optional;
  * io.github.jdem846.geo.UtmZone}). A lat/lon or UTM GeoTIFF, an SRTM tile or a file without CRS never starts SIS,
  * which would otherwise take a core from the command for nothing (docs/performance.md, "Start-up"). The input is
  * the first argument that names an existing DEM file; without one (the bundled sample, {@code --version}, a typo)
- * nothing is done. Any failure here is ignored: the command reads the file again and reports its own errors.
+ * nothing is done. When the command will need latitude/longitude ({@link #needsLatLon}), the file's CRS is also
+ * resolved by SIS here. Any failure here is ignored: the command reads the file again and reports its own errors.
  */
 final class CrsWarmUp {
 
@@ -31,10 +32,29 @@ final class CrsWarmUp {
 
     private static void run(String[] args) {
         try {
-            readFirstDem(args);
-        } catch (RuntimeException | LinkageError e) {
+            Optional<Path> dem = readFirstDem(args);
+            if (dem.isPresent() && needsLatLon(args)) {
+                DemReader.inspect(dem.get()).geometry().geoLocator();   // SIS's CRS and transform, as the command will
+            }
+        } catch (IOException | RuntimeException | LinkageError e) {
             // ignored: see the class comment
         }
+    }
+
+    /**
+     * True when the command will locate the grid in latitude/longitude, which needs Apache SIS also for a CRS the
+     * reader knows without it (a UTM zone): {@code info}, a sun by date and time, a world file's {@code .prj}.
+     */
+    static boolean needsLatLon(String[] args) {
+        if (args.length > 0 && args[0].equals("info")) {
+            return true;
+        }
+        for (String arg : args) {
+            if (arg.equals("--sun-time") || arg.startsWith("--sun-time=") || arg.equals("--world-file")) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**

@@ -1,6 +1,8 @@
 package io.github.jdem846.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -28,6 +30,18 @@ class CrsWarmUpTest {
             colours.toString(), JACKSBORO, "-o", oldOutput.toString()}));
         assertEquals(Optional.of(Path.of(BT_FLT)), CrsWarmUp.readFirstDem(new String[] {"hillshade", "-o",
             oldOutput.toString(), "--sun-azimuth=-720", BT_FLT, JACKSBORO}));
+    }
+
+    @Test
+    void latitudeAndLongitudeAreWarmedOnlyForTheCommandsThatNeedThem() {
+        assertTrue(CrsWarmUp.needsLatLon(new String[] {"info", JACKSBORO}));
+        assertTrue(CrsWarmUp.needsLatLon(new String[] {"render", JACKSBORO, "-o", "x.png", "--sun-time",
+            "2024-06-21T17:00Z"}));
+        assertTrue(CrsWarmUp.needsLatLon(new String[] {"shadows", JACKSBORO, "--sun-time=2024-06-21T17:00Z"}));
+        assertTrue(CrsWarmUp.needsLatLon(new String[] {"hillshade", JACKSBORO, "-o", "x.png", "--world-file"}));
+        assertFalse(CrsWarmUp.needsLatLon(new String[] {"hillshade", JACKSBORO, "-o", "info"}));
+        assertFalse(CrsWarmUp.needsLatLon(new String[] {"render", "--sun-azimuth", "300"}));
+        assertFalse(CrsWarmUp.needsLatLon(new String[0]));
     }
 
     @Test
