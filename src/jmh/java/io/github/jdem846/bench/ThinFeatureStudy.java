@@ -39,7 +39,9 @@ public final class ThinFeatureStudy {
         row("Big Tujunga 30 m, 400×300 crop", bt, pool);
         row("Jacksboro 3″, 403×344", jb, pool);
         row("Big Tujunga ≈ 210 m, 171×92", coarse, pool);
-        row("poles: flat 1 m, 1 % of cells +3…20 m, 400×400", poles(400, 846), pool);
+        Dem poles = poles(400, 846);
+        row("poles: flat 1 m, 1 % of cells +3…20 m, 400×400", poles, pool);
+        marchRow("poles, march ½ cell bilinear", poles, pool);
         pool.shutdown();
     }
 
@@ -72,6 +74,30 @@ public final class ThinFeatureStudy {
             System.out.printf(Locale.ROOT, "| %s | %.0f° | %.3f %% (%.3f / %.3f) | %.3f %% (%.3f / %.3f) | %.1f | %.1f |%n",
                     name, e, pct(p[0] + p[1], cells), pct(p[0], cells), pct(p[1], cells), pct(t[0] + t[1], cells),
                     pct(t[0], cells), pct(t[1], cells), plainMs / AZIMUTHS.length, thinMs / AZIMUTHS.length);
+        }
+    }
+
+    /** The bilinear half-cell march on the same suns: disagreement with exact and time (one run). */
+    private static void marchRow(String name, Dem dem, ForkJoinPool pool) {
+        ShadowOptions march = ShadowOptions.DEFAULTS.withStep(io.github.jdem846.shadow.StepSize.HALF_CELL)
+                .withSampling(io.github.jdem846.shadow.Sampling.BILINEAR);
+        for (double e : ELEVATIONS) {
+            long cells = 0;
+            long[] d = new long[2];
+            double ms = 0;
+            for (double a : AZIMUTHS) {
+                LightDirection light = new LightDirection(a, e);
+                float[] ref = ShadowAlgorithm.EXACT.compute(dem, light, ShadowOptions.DEFAULTS, pool).backingArray();
+                long t0 = System.nanoTime();
+                float[] m = ShadowAlgorithm.MARCH.compute(dem, light, march, pool).backingArray();
+                ms += (System.nanoTime() - t0) / 1e6;
+                for (int i = 0; i < ref.length; i++) {
+                    cells++;
+                    count(ref[i], m[i], d);
+                }
+            }
+            System.out.printf(Locale.ROOT, "| %s | %.0f° | %.3f %% (%.3f / %.3f) | | %.1f | |%n", name, e,
+                    pct(d[0] + d[1], cells), pct(d[0], cells), pct(d[1], cells), ms / AZIMUTHS.length);
         }
     }
 
