@@ -120,9 +120,10 @@ final class GeoTiffSource implements RasterSource {
             case 34887 -> "LERC";
             default -> "code " + code;
         };
+        boolean floating = fields.has(TiffFields.SAMPLE_FORMAT) && fields.longs(TiffFields.SAMPLE_FORMAT)[0] == 3;
         throw new DemFormatException(tif, name + " compression (TIFF tag 259 = " + code + ") is not supported; "
                 + "supported: none, LZW, Deflate, PackBits, JPEG. Re-encode it, e.g. gdal_translate -co "
-                + "COMPRESS=DEFLATE -co PREDICTOR=2 in.tif out.tif");
+                + "COMPRESS=DEFLATE -co PREDICTOR=" + (floating ? 3 : 2) + " in.tif out.tif");
     }
 
     @Override

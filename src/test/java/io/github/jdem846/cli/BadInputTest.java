@@ -138,7 +138,36 @@ class BadInputTest {
     @Test
     void unsupportedCompressionIsNamedWithARemedy() {
         assertRefused(Path.of("testdata/formats/volcano_zstd.tif"), "ZSTD compression", "not supported",
-                "COMPRESS=DEFLATE");
+                "COMPRESS=DEFLATE", "PREDICTOR=2");
+    }
+
+    @Test
+    void theRemedyForFloatingPointSamplesUsesTheFloatingPointPredictor() throws IOException {
+        // the int16 ZSTD file declared as float32 (BitsPerSample 32, SampleFormat 3): refused before any pixel
+        // is read, with the predictor that suits floating-point data
+        byte[] b = Files.readAllBytes(Path.of("testdata/formats/volcano_zstd.tif"));
+        setShortEntry(b, 258, 32);
+        setShortEntry(b, 339, 3);
+        Path f = tmp.resolve("float_zstd.tif");
+        Files.write(f, b);
+        assertRefused(f, "ZSTD compression", "PREDICTOR=3");
+    }
+
+    /** Sets the inline SHORT value of tag {@code tag} in the first IFD of a little-endian classic TIFF. */
+    private static void setShortEntry(byte[] tiff, int tag, int value) {
+        ByteBuffer bb = ByteBuffer.wrap(tiff).order(ByteOrder.LITTLE_ENDIAN);
+        assertEquals('I', (char) tiff[0], "a little-endian TIFF");
+        int ifd = bb.getInt(4);
+        int n = bb.getShort(ifd) & 0xFFFF;
+        for (int i = 0; i < n; i++) {
+            int at = ifd + 2 + 12 * i;
+            if ((bb.getShort(at) & 0xFFFF) == tag) {
+                assertEquals(1, bb.getInt(at + 4), "one value");
+                bb.putShort(at + 8, (short) value);
+                return;
+            }
+        }
+        throw new AssertionError("no tag " + tag);
     }
 
     @Test
