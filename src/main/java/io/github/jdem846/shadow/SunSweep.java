@@ -662,7 +662,12 @@ final class SunSweep {
                 prev[q] = edgeStart(kFrom + q, drop);
             }
         }
+        float[] out = w.out;
+        CellWindow win = w.win;
+        int outStrideJ = rj * win.width() + cj;
         int wi1 = w.wi1;
+        int wj0 = w.wj0;
+        int wj1 = w.wj1;
         int sj = strideJ;
         for (int i = iStart; i >= iEnd; i--) {
             int pfi = pf[i];
@@ -715,56 +720,46 @@ final class SunSweep {
             if (thinFeatures && i + 2 <= rTop) {
                 strips.take(this, i + 2, kFrom, drop);
             }
-            if (i <= wi1) {
-                evaluateLockstep(w, kFrom, i, off, phi, lines, h, strips, drop, dTan, tFirst);
+            if (i > wi1) {
+                continue;
             }
-        }
-    }
-
-    /** The cells of the window at major index i between the lines of a lockstep block (see bandsUniformHard). */
-    private void evaluateLockstep(Window w, int kFrom, int i, int off, double phi, int lines, double[] h,
-                                  Strips strips, double drop, double dTan, double tFirst) {
-        float[] out = w.out;
-        CellWindow win = w.win;
-        int outStrideJ = rj * win.width() + cj;
-        int sj = strideJ;
-        int base = baseI[i];
-        int q0 = Math.max(0, w.wj0 - off);
-        int q1 = Math.min(lines - 2, w.wj1 - off);
-        if (q0 > q1) {
-            return;
-        }
-        int outBase = (r0 + ri * i - win.row()) * win.width() + (c0 + ci * i - win.col());
-        boolean inner = i + 1 < nMaj;
-        int up = inner ? baseI[i + 1] : 0;
-        // cells whose ray leaves through the file's exit edge within a few steps (j ≥ jTraced) are traced
-        // in a loop of their own, so that the common loop holds no ray march
-        int qEdge = jTraced == Integer.MAX_VALUE ? q1 + 1
-                : (int) Math.max(q0, Math.min(q1 + 1L, (long) jTraced - off));
-        for (int q = q0; q < qEdge; q++) {
-            int j = off + q;
-            int cell = base + sj * j;
-            double z0 = v[cell];
-            float result = 0f;
-            if (z0 == z0) {
-                boolean shadow = between(h[q], h[q + 1], phi, uniformFloor) > z0
-                        || thinFeatures && strips.blocks(this, q, kFrom + q, i, phi, z0, drop)
-                        || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
-                result = shadow ? 1f : 0f;
+            int q0 = Math.max(0, wj0 - off);
+            int q1 = Math.min(lines - 2, wj1 - off);
+            if (q0 > q1) {
+                continue;
             }
-            out[outBase + outStrideJ * j] = result;
-        }
-        for (int q = qEdge; q <= q1; q++) {
-            int j = off + q;
-            int cell = base + sj * j;
-            double z0 = v[cell];
-            float result = 0f;
-            if (z0 == z0) {
-                boolean shadow = rayBlockedToEdge(i, j, z0)
-                        || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
-                result = shadow ? 1f : 0f;
+            int outBase = (r0 + ri * i - win.row()) * win.width() + (c0 + ci * i - win.col());
+            boolean inner = i + 1 < nMaj;
+            int up = inner ? baseI[i + 1] : 0;
+            // cells whose ray leaves through the file's exit edge within a few steps (j ≥ jTraced) are traced
+            // in a loop of their own, so that the common loop holds no ray march
+            int qEdge = jTraced == Integer.MAX_VALUE ? q1 + 1
+                    : (int) Math.max(q0, Math.min(q1 + 1L, (long) jTraced - off));
+            for (int q = q0; q < qEdge; q++) {
+                int j = off + q;
+                int cell = base + sj * j;
+                double z0 = v[cell];
+                float result = 0f;
+                if (z0 == z0) {
+                    boolean shadow = between(h[q], h[q + 1], phi, uniformFloor) > z0
+                            || thinFeatures && strips.blocks(this, q, kFrom + q, i, phi, z0, drop)
+                            || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
+                    result = shadow ? 1f : 0f;
+                }
+                out[outBase + outStrideJ * j] = result;
             }
-            out[outBase + outStrideJ * j] = result;
+            for (int q = qEdge; q <= q1; q++) {
+                int j = off + q;
+                int cell = base + sj * j;
+                double z0 = v[cell];
+                float result = 0f;
+                if (z0 == z0) {
+                    boolean shadow = rayBlockedToEdge(i, j, z0)
+                            || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
+                    result = shadow ? 1f : 0f;
+                }
+                out[outBase + outStrideJ * j] = result;
+            }
         }
     }
 
