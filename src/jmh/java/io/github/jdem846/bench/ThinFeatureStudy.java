@@ -71,8 +71,8 @@ public final class ThinFeatureStudy {
                 plainMs += best(dem, light, plain, pool);
                 thinMs += best(dem, light, thin, pool);
             }
-            System.out.printf(Locale.ROOT, "| %s | %.0f° | %.3f %% (%.3f / %.3f) | %.3f %% (%.3f / %.3f) | %.1f | %.1f |%n",
-                    name, e, pct(p[0] + p[1], cells), pct(p[0], cells), pct(p[1], cells), pct(t[0] + t[1], cells),
+            System.out.printf(Locale.ROOT,
+                    "| %s | %.0f° | %.3f %% (%.3f / %.3f) | %.3f %% (%.3f / %.3f) | %.1f | %.1f |%n", name, e, pct(p[0] + p[1], cells), pct(p[0], cells), pct(p[1], cells), pct(t[0] + t[1], cells),
                     pct(t[0], cells), pct(t[1], cells), plainMs / AZIMUTHS.length, thinMs / AZIMUTHS.length);
         }
     }

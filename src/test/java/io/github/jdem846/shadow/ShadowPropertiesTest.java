@@ -297,8 +297,8 @@ class ShadowPropertiesTest {
         // A one-cell 300 m spike on flat ground (30 m cells), read bilinearly: a pyramid whose peak is one point.
         // Off-axis the sweep's lines pass beside the peak and see part of it; with thin features each cell's
         // own-ray sample at the strip's steepest point (SunSweep.StripHull) sees what the cell's own march sees, so
-        // the sweep misses none of exact's shadow (the plain sweep misses up to 8 of 35 cells). Its lines' interpolation still
-        // widens the shadow: up to 15 cells beside exact's 35, bounded here at half.
+        // the sweep misses none of exact's shadow (the plain sweep misses up to 8 of 35 cells). Its lines'
+        // interpolation still widens the shadow: up to 15 cells beside exact's 35, bounded here at half.
         int n = 121;
         Dem spike = column(n, 1, 30, 300f);
         for (double az : new double[] {160, 250, 300, 20.5}) {
