@@ -288,8 +288,8 @@ final class SunSweep {
         int walk = w.iTop - w.wi0 + 1;
         Line a = new Line(cols, walk);
         Line b = new Line(cols, walk);
-        boolean[] own = new boolean[cols];
-        double[] stripPos = new double[walk];
+        boolean[] own = new boolean[cols];                              // stays false without thin features
+        double[] stripPos = thinFeatures ? new double[walk] : null;
         walkLine(w, kFrom, a);
         for (int k = kFrom; k <= kTo; k++) {
             walkLine(w, k + 1, b);
