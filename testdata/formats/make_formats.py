@@ -61,6 +61,18 @@ write_like(VOLCANO, "volcano_cint16.tif", [v.astype(np.int16)], gdal.GDT_CInt16)
 write_like(VOLCANO, "volcano_rotated.tif", [v.astype(np.int16)], gdal.GDT_Int16,
            geotransform=(1756944.0, 9.96194698, 0.87155743, 5917994.0, 0.87155743, -9.96194698))
 
+# Sparse files (SPARSE_OK): blocks that hold only no-data (or only 0 without no-data) are not written; their
+# offset and byte count are 0 and readers fill them with no-data (or 0).
+sparse = v.astype(np.int16)
+sparse[16:48, 16:48] = -32768           # tiles (1,1), (1,2), (2,1), (2,2) of 16 x 16
+sparse[80:87, 48:61] = -32768           # the partial tile in the south-east corner
+write_like(VOLCANO, "volcano_sparse_tile16_nodata.tif", [sparse], gdal.GDT_Int16, nodata=-32768,
+           options=["SPARSE_OK=TRUE", "TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16", "COMPRESS=DEFLATE"])
+zeros = v.astype(np.int16)
+zeros[8:24, :] = 0                      # strips 1 and 2 of 8 rows
+write_like(VOLCANO, "volcano_sparse_strip8_zeros.tif", [zeros], gdal.GDT_Int16,
+           options=["SPARSE_OK=TRUE", "BLOCKYSIZE=8", "COMPRESS=LZW", "PREDICTOR=2"])
+
 # PixelIsPoint: the same grid, georeferenced on cell centres.
 translate(VOLCANO, "volcano_pixelispoint.tif", "-mo", "AREA_OR_POINT=Point")
 translate(VOLCANO, "volcano_int16_decimetres_scale0.1_offset50_nodata440.tif", "-ot", "Int16", "-scale", "94", "195",

@@ -186,8 +186,40 @@ final class GeoTiffSource implements RasterSource {
         copyBand0(raster, col - readCol, 0, width, rows, dst);
     }
 
-    /** Decodes only the strips or tiles covering the cells, through a synthetic directory. */
+    /**
+     * Decodes only the strips or tiles covering the cells, through a synthetic directory. Where some of them are
+     * sparse (never written), block by block: sparse ones read as the declared no-data, or 0 without one, as GDAL
+     * reads them.
+     */
     private void readSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
+        if (!layout.coversSparse(col, row, width, rows)) {
+            decodeSubset(col, row, width, rows, dst);
+            return;
+        }
+        float fill = info.declaredNoData() != null ? info.declaredNoData().floatValue() : 0f;
+        int bw = layout.blockWidth();
+        int bh = layout.blockHeight();
+        for (int by = row / bh * bh; by < row + rows; by += bh) {
+            int y0 = Math.max(by, row);
+            int h = Math.min(by + bh, row + rows) - y0;
+            for (int bx = col / bw * bw; bx < col + width; bx += bw) {
+                int x0 = Math.max(bx, col);
+                int w = Math.min(bx + bw, col + width) - x0;
+                float[] part = new float[w * h];
+                if (layout.isSparse(by / bh * layout.blocksAcross() + bx / bw)) {
+                    java.util.Arrays.fill(part, fill);
+                } else {
+                    decodeSubset(x0, y0, w, h, part);
+                }
+                for (int r = 0; r < h; r++) {
+                    System.arraycopy(part, r * w, dst, (y0 - row + r) * width + (x0 - col), w);
+                }
+            }
+        }
+    }
+
+    /** Decodes the strips or tiles covering the cells, none of them sparse, through a synthetic directory. */
+    private void decodeSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
         TiffSubset.Subset subset = TiffSubset.of(layout, col, row, width, rows);
         Raster raster;
         DecodeTarget target;

@@ -33,6 +33,26 @@ final class TiffSubset {
         int blocksDown() {
             return (height + blockHeight - 1) / blockHeight;
         }
+
+        /**
+         * Whether block {@code index} (row-major, plane 0) was never written: GDAL's {@code SPARSE_OK} leaves
+         * blocks of only no-data (or only 0) out with offset and byte count 0, and readers fill them.
+         */
+        boolean isSparse(int index) {
+            return offsets[index] == 0 || byteCounts[index] == 0;
+        }
+
+        /** Whether any block under columns {@code [col, col+w)} and rows {@code [row, row+h)} is sparse. */
+        boolean coversSparse(int col, int row, int w, int h) {
+            for (int br = row / blockHeight; br <= (row + h - 1) / blockHeight; br++) {
+                for (int bc = col / blockWidth; bc <= (col + w - 1) / blockWidth; bc++) {
+                    if (isSparse(br * blocksAcross() + bc)) {
+                        return true;
+                    }
+                }
+            }
+            return false;
+        }
     }
 
     /**

@@ -132,6 +132,39 @@ class OtherFormatsTest {
                 40))), "planar window across tile edges");
     }
 
+    /** The volcano with cells {@code [col0, col1) × [row0, row1)} set to {@code value}. */
+    private static Dem volcanoWith(float value, int col0, int row0, int col1, int row1, Dem base) {
+        float[] out = base.backingArray().clone();
+        for (int r = row0; r < row1; r++) {
+            java.util.Arrays.fill(out, r * base.width() + col0, r * base.width() + col1, value);
+        }
+        return new Dem(out, base.geometry());
+    }
+
+    @Test
+    void sparseTilesReadAsNoDataInEveryWindow() throws IOException {
+        // SPARSE_OK left out 4 whole tiles and the partial south-east tile (make_formats.py): offsets and counts 0.
+        Path file = FORMATS.resolve("volcano_sparse_tile16_nodata.tif");
+        Dem volcano = TestDems.load(TestDems.VOLCANO);
+        Dem expected = volcanoWith(Float.NaN, 48, 80, 61, 87, volcanoWith(Float.NaN, 16, 16, 48, 48, volcano));
+        assertSameValues(expected, DemReader.read(file), "whole file");
+        for (Window.Cells w : new Window.Cells[] {Window.cells(5, 10, 40, 30), Window.cells(20, 20, 8, 8),
+            Window.cells(40, 60, 21, 27), Window.cells(0, 47, 61, 2)}) {
+            assertSameValues(expected.crop(w.col(), w.row(), w.width(), w.height()),
+                    DemReader.read(file, ReadRequest.of(w)), "window " + w);
+        }
+    }
+
+    @Test
+    void sparseStripsWithoutNoDataReadAsZero() throws IOException {
+        Path file = FORMATS.resolve("volcano_sparse_strip8_zeros.tif");
+        Dem volcano = TestDems.load(TestDems.VOLCANO);
+        Dem expected = volcanoWith(0f, 0, 8, 61, 24, volcano);
+        assertSameValues(expected, DemReader.read(file), "whole file");
+        assertSameValues(expected.crop(3, 5, 50, 30), DemReader.read(file, ReadRequest.of(Window.cells(3, 5, 50,
+                30))), "window across the sparse strips");
+    }
+
     @Test
     void jpegCompressedTiffIsReadWithoutSubsetting() throws IOException {
         // JPEG is lossy (up to 5 m off the source here): compare with GDAL's decode of the same file
