@@ -1,5 +1,6 @@
 package io.github.jdem846.io;
 
+import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.raster.NoData;
 import java.io.IOException;
 
@@ -8,7 +9,8 @@ import java.io.IOException;
  * (declared value → NaN), then the file's {@link ValueScale}, and, for decimation {@code d > 1}, the box filter:
  * each output cell is the mean of the valid cells of its {@code d × d} block (partial at the east and south edges),
  * NaN when none is valid. Only one band of rows is held at a time, so the memory used is independent of the height
- * of the window.
+ * of the window. On the way it takes the statistics of the window's cells at full resolution, so that a decimated
+ * read of a whole file needs no second pass for the file's elevation range.
  */
 final class BlockReader {
 
@@ -36,8 +38,10 @@ final class BlockReader {
      * Reads {@code window} of {@code source} at decimation {@code d} into {@code sink}.
      *
      * @param noData the declared no-data value, NaN for none
+     * @return min, max and valid count of the window's cells at full resolution (no-data rule and value scale
+     *         applied)
      */
-    static void read(RasterSource source, Window.Cells window, int d, double noData, RowSink sink)
+    static ElevationStatistics read(RasterSource source, Window.Cells window, int d, double noData, RowSink sink)
             throws IOException {
         int w = window.width();
         int h = window.height();
@@ -51,6 +55,9 @@ final class BlockReader {
         float nd = NoData.toFloat32(noData);
         boolean hasNoData = !Double.isNaN(noData);
         ValueScale scale = source.valueScale();
+        float min = Float.POSITIVE_INFINITY;
+        float max = Float.NEGATIVE_INFINITY;
+        long valid = 0;
         int outRow = 0;
         for (int r0 = 0; r0 < h; r0 += bandRows) {
             int n = Math.min(bandRows, h - r0);
@@ -66,6 +73,14 @@ final class BlockReader {
                 scale.apply(band, n * w);
             }
             if (d == 1) {
+                for (int i = 0; i < n * w; i++) {
+                    float v = band[i];
+                    if (v == v) {
+                        min = v < min ? v : min;
+                        max = v > max ? v : max;
+                        valid++;
+                    }
+                }
                 for (int r = 0; r < n; r++) {
                     System.arraycopy(band, r * w, out, 0, w);
                     sink.accept(outRow++, out);
@@ -85,11 +100,14 @@ final class BlockReader {
                             int o = c / d;
                             sum[o] += v;
                             count[o]++;
+                            min = v < min ? v : min;
+                            max = v > max ? v : max;
                         }
                     }
                 }
                 for (int o = 0; o < outW; o++) {
                     out[o] = count[o] > 0 ? (float) (sum[o] / count[o]) : Float.NaN;
+                    valid += count[o];
                 }
                 sink.accept(outRow++, out);
             }
@@ -97,6 +115,7 @@ final class BlockReader {
         if (outRow != outH) {
             throw new IllegalStateException("produced " + outRow + " rows, expected " + outH);
         }
+        return ElevationStatistics.ofRange(min, max, valid, (long) w * h);
     }
 
     /**

@@ -80,24 +80,25 @@ public final class DemReader {
                 parts--;
             }
             float[] values = new float[outW * outH];
+            ElevationStatistics stats;
             if (parts == 1) {
-                readPart(source, cells, d, info.noDataOrNaN(), values, 0, outW);
+                stats = readPart(source, cells, d, info.noDataOrNaN(), values, 0, outW);
             } else {
-                readParts(file, source, cells, d, info.noDataOrNaN(), values, outW, parts,
+                stats = readParts(file, source, cells, d, info.noDataOrNaN(), values, outW, parts,
                         (int) ((units + parts - 1) / parts) * unit);
             }
             GridGeometry g = info.geometry().window(cells.col(), cells.row(), cells.width(), cells.height());
             if (d > 1) {
                 g = g.decimate(d, d);
             }
-            return new LoadedDem(info, Dem.ofNormalized(values, g, info.noDataOrNaN()));
+            return new LoadedDem(info, Dem.ofNormalized(values, g, info.noDataOrNaN()), stats);
         }
     }
 
     /** Reads {@code cells} of {@code source} into {@code values} from output row {@code outRow0} on. */
-    private static void readPart(RasterSource source, Window.Cells cells, int d, double noData, float[] values,
-                                 int outRow0, int outW) throws IOException {
-        BlockReader.read(source, cells, d, noData,
+    private static ElevationStatistics readPart(RasterSource source, Window.Cells cells, int d, double noData,
+                                                float[] values, int outRow0, int outW) throws IOException {
+        return BlockReader.read(source, cells, d, noData,
                 (row, v) -> System.arraycopy(v, 0, values, (outRow0 + row) * outW, outW));
     }
 
@@ -105,8 +106,9 @@ public final class DemReader {
      * Reads {@code cells} in bands of {@code rowsPerPart} rows at once: the first through {@code first} on the
      * calling thread, the others each through a reader of its own on a thread of its own.
      */
-    private static void readParts(Path file, RasterSource first, Window.Cells cells, int d, double noData,
-                                  float[] values, int outW, int parts, int rowsPerPart) throws IOException {
+    private static ElevationStatistics readParts(Path file, RasterSource first, Window.Cells cells, int d,
+                                                 double noData, float[] values, int outW, int parts,
+                                                 int rowsPerPart) throws IOException {
         java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(parts - 1,
                 r -> {
                     Thread t = new Thread(r, "jdem846-read");
@@ -114,7 +116,7 @@ public final class DemReader {
                     return t;
                 });
         try {
-            java.util.List<java.util.concurrent.Future<Void>> others = new java.util.ArrayList<>();
+            java.util.List<java.util.concurrent.Future<ElevationStatistics>> others = new java.util.ArrayList<>();
             for (int p = 1; p < parts; p++) {
                 int row0 = p * rowsPerPart;
                 if (row0 >= cells.height()) {
@@ -124,16 +126,16 @@ public final class DemReader {
                         Math.min(rowsPerPart, cells.height() - row0));
                 others.add(pool.submit(() -> {
                     try (RasterSource own = open(file)) {
-                        readPart(own, part, d, noData, values, row0 / d, outW);
+                        return readPart(own, part, d, noData, values, row0 / d, outW);
                     }
-                    return null;
                 }));
             }
-            readPart(first, new Window.Cells(cells.col(), cells.row(), cells.width(),
+            ElevationStatistics stats = readPart(first, new Window.Cells(cells.col(), cells.row(), cells.width(),
                     Math.min(rowsPerPart, cells.height())), d, noData, values, 0, outW);
-            for (java.util.concurrent.Future<Void> f : others) {
-                f.get();
+            for (java.util.concurrent.Future<ElevationStatistics> f : others) {
+                stats = stats.merge(f.get());
             }
+            return stats;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new java.io.InterruptedIOException("reading " + file + " was interrupted");
@@ -169,22 +171,8 @@ public final class DemReader {
     public static ElevationStatistics statistics(Path file) throws IOException {
         try (RasterSource source = open(file)) {
             DemInfo info = source.info();
-            double[] acc = {Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, 0};
-            BlockReader.read(source, new Window.Cells(0, 0, info.width(), info.height()), 1, info.noDataOrNaN(),
-                    (row, v) -> {
-                        for (int i = 0; i < info.width(); i++) {
-                            float x = v[i];
-                            if (x == x) {
-                                acc[0] = Math.min(acc[0], x);
-                                acc[1] = Math.max(acc[1], x);
-                                acc[2]++;
-                            }
-                        }
-                    });
-            long total = (long) info.width() * info.height();
-            long valid = (long) acc[2];
-            return valid == 0 ? new ElevationStatistics(Double.NaN, Double.NaN, 0, total)
-                    : new ElevationStatistics(acc[0], acc[1], valid, total);
+            return BlockReader.read(source, new Window.Cells(0, 0, info.width(), info.height()), 1,
+                    info.noDataOrNaN(), (row, v) -> { });
         }
     }
 
@@ -207,7 +195,7 @@ public final class DemReader {
             String name = "bundled sample " + SAMPLE_RESOURCE.substring(SAMPLE_RESOURCE.lastIndexOf('/') + 1);
             DemInfo i = loaded.info();
             return new LoadedDem(new DemInfo(name, i.format(), i.dataType(), i.bands(), i.geometry(),
-                    i.declaredNoData(), i.notices()), loaded.dem());
+                    i.declaredNoData(), i.notices()), loaded.dem(), loaded.sourceStatistics());
         } finally {
             Files.deleteIfExists(tmp);
         }

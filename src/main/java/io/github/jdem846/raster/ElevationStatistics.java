@@ -26,10 +26,25 @@ public record ElevationStatistics(double min, double max, long validCount, long 
                 }
             }
         }
-        if (valid == 0) {
-            return new ElevationStatistics(Double.NaN, Double.NaN, 0, values.length);
+        return ofRange(min, max, valid, values.length);
+    }
+
+    /** The statistics of {@code valid} cells between {@code min} and {@code max} (ignored when none is valid). */
+    public static ElevationStatistics ofRange(double min, double max, long valid, long total) {
+        return valid == 0 ? new ElevationStatistics(Double.NaN, Double.NaN, 0, total)
+                : new ElevationStatistics(min, max, valid, total);
+    }
+
+    /** The statistics of the cells of this and {@code other} together. */
+    public ElevationStatistics merge(ElevationStatistics other) {
+        if (other.isEmpty()) {
+            return new ElevationStatistics(min, max, validCount, totalCount + other.totalCount);
         }
-        return new ElevationStatistics(min, max, valid, values.length);
+        if (isEmpty()) {
+            return new ElevationStatistics(other.min, other.max, other.validCount, totalCount + other.totalCount);
+        }
+        return new ElevationStatistics(Math.min(min, other.min), Math.max(max, other.max),
+                validCount + other.validCount, totalCount + other.totalCount);
     }
 
     /** Number of no-data cells. */

@@ -105,8 +105,9 @@ public final class DemLoader {
     /**
      * Loads {@code file} for a picture of {@code window} (null = the whole grid) at {@code size}, with {@code halo}.
      *
-     * @param fileStatistics also give the whole file's elevation range (streamed, without holding the grid, and
-     *                       only when the loaded grid is not the whole file at full resolution)
+     * @param fileStatistics also give the whole file's elevation range (taken during the read when it covers the
+     *                       whole file, decimated or not; otherwise streamed in a pass of its own, without holding
+     *                       the grid)
      */
     public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics)
             throws IOException {
@@ -151,9 +152,9 @@ public final class DemLoader {
         int hgt = Math.min(px[1], outH - row);
         ElevationStatistics stats = null;
         if (fileStatistics) {
-            boolean whole = read.width() == info.width() && read.height() == info.height()
-                    && dem.width() == info.width() && dem.height() == info.height();
-            stats = whole ? dem.statistics() : streamed.get();
+            // a read of the whole file, decimated or not, took the file's range on the way
+            boolean wholeFile = read.width() == info.width() && read.height() == info.height();
+            stats = wholeFile ? loaded.sourceStatistics() : streamed.get();
         }
         return new Loaded(loaded.info().withDefaultEllipsoid(body), dem, col, row, w, hgt, stats);
     }

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.ElevationStatistics;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -11,7 +12,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Reading in row bands through several readers at once gives the same grid as one sequential read: GeoTIFF strips
- * and tiles (subset decoding), GridFloat raw rows, with windows and decimation that do not divide the bands.
+ * and tiles (subset decoding), GridFloat raw rows, with windows and decimation that do not divide the bands. The
+ * statistics taken on the way are those of the window's cells at full resolution, however it was read.
  */
 class ParallelReadTest {
 
@@ -33,9 +35,16 @@ class ParallelReadTest {
                     new ReadRequest(Window.cells(5, 7, info.width() - 11, info.height() - 9), 1),
                     new ReadRequest(Window.cells(3, 2, info.width() - 4, info.height() - 5), 4));
             for (ReadRequest request : requests) {
-                Dem sequential = DemReader.load(file, request, 1, 1).dem();
+                LoadedDem loaded = DemReader.load(file, request, 1, 1);
+                Dem sequential = loaded.dem();
+                ElevationStatistics fullResolution = ElevationStatistics.of(DemReader.read(file,
+                        new ReadRequest(request.window(), 1)).backingArray());
+                assertEquals(fullResolution, loaded.sourceStatistics(), name + " " + request);
                 for (int parallelism : new int[] {2, 3, 7}) {
-                    Dem parallel = DemReader.load(file, request, parallelism, 1).dem();
+                    LoadedDem inBands = DemReader.load(file, request, parallelism, 1);
+                    assertEquals(fullResolution, inBands.sourceStatistics(), name + " " + request + " in "
+                            + parallelism + " bands");
+                    Dem parallel = inBands.dem();
                     assertEquals(sequential.width(), parallel.width());
                     assertEquals(sequential.height(), parallel.height());
                     assertArrayEquals(sequential.backingArray(), parallel.backingArray(),
