@@ -66,7 +66,31 @@ public final class Main implements Runnable {
             quietLibraryLogs();
         }
         CrsWarmUp.start(args);
-        System.exit(commandLine(args).execute(args));
+        System.exit(execute(commandLine(args), args));
+    }
+
+    /**
+     * Runs the command line. Running out of heap (an {@link OutOfMemoryError}, which picocli does not catch) becomes
+     * one line for a person, with the heap's size and what to do, and exit status 1; staged output files are
+     * already deleted by then.
+     */
+    static int execute(CommandLine cl, String[] args) {
+        try {
+            return cl.execute(args);
+        } catch (OutOfMemoryError e) {
+            java.io.PrintWriter err = cl.getErr();
+            err.println("jdem846: out of memory: the grid and the picture do not fit in the Java heap (at most "
+                    + heapSize() + "); make a smaller picture with --scale, --width or --window, or give Java more"
+                    + " heap, e.g. java -Xmx8g -jar jdem846-cli.jar …");
+            err.flush();
+            return 1;
+        }
+    }
+
+    private static String heapSize() {
+        double mib = Runtime.getRuntime().maxMemory() / 1048576.0;
+        return mib < 1024 ? String.format(java.util.Locale.ROOT, "%.0f MiB", mib)
+                : String.format(java.util.Locale.ROOT, "%.1f GiB", mib / 1024);
     }
 
     /**
