@@ -169,8 +169,9 @@ final class InfoReport {
         if (v == Math.rint(v) && Math.abs(v) < 1e15) {
             return Long.toString((long) v);
         }
-        String s = new java.math.BigDecimal(v).round(new java.math.MathContext(12)).stripTrailingZeros()
-                .toPlainString();
-        return s;
+        java.math.BigDecimal d = new java.math.BigDecimal(v).round(new java.math.MathContext(12))
+                .stripTrailingZeros();
+        // plain digits for map numbers; powers of ten for float32 sentinels such as -3.40282346639E+38
+        return Math.abs(v) < 1e15 ? d.toPlainString() : d.toString();
     }
 }

@@ -155,4 +155,13 @@ class InfoCommandTest {
         assertEquals("-3", Json.number(-3.0));
         assertEquals("0.5", Json.number(0.5));
     }
+
+    @Test
+    void numbersArePlainExceptFloat32Sentinels() {
+        assertEquals("-9999", InfoReport.fmt(-9999));
+        assertEquals("0.00833333333333", InfoReport.fmt(1 / 120.0));
+        assertEquals("376313.655454", InfoReport.fmt(376313.655454263499));
+        // GDAL_NODATA -3.4028234663852886e+38 (float32's lowest value), as ESRI tools write it
+        assertEquals("-3.40282346639E+38", InfoReport.fmt(-3.4028234663852886e+38));
+    }
 }
