@@ -10,7 +10,8 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * The CRS of an ESRI-family raster: its {@code .prj} (ESRI WKT, parsed by Apache SIS) when there is one;
+ * The CRS of an ESRI-family raster: its {@code .prj} when there is one (ESRI WKT, parsed by Apache SIS, or the old
+ * ArcInfo keyword format of USGS NED grids, {@link ArcInfoPrj});
  * otherwise, when the extent fits in ±180°/±90° with cells of at most 1, geographic WGS 84 flagged as
  * {@linkplain CrsInfo#asAssumed() assumed}; otherwise unknown.
  */
@@ -44,7 +45,11 @@ final class SidecarCrs {
         Path prj = prjOf(dataFile);
         if (prj != null) {
             try {
-                return CrsResolver.fromWkt(Files.readString(prj, StandardCharsets.ISO_8859_1));
+                String text = Files.readString(prj, StandardCharsets.ISO_8859_1);
+                if (ArcInfoPrj.looksLikeOne(text)) {
+                    return ArcInfoPrj.parse(text, prj.getFileName().toString(), notices);
+                }
+                return CrsResolver.fromWkt(text);
             } catch (IOException | IllegalArgumentException e) {
                 notices.add(prj.getFileName() + " could not be parsed, so the CRS is unknown: " + e.getMessage());
                 return CrsInfo.UNKNOWN;

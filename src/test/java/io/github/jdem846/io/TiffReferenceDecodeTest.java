@@ -25,7 +25,11 @@ import org.junit.jupiter.params.provider.MethodSource;
  */
 class TiffReferenceDecodeTest {
 
-    /** The readable GeoTIFFs of testdata, the bundled sample included (the others must be refused). */
+    /**
+     * The readable GeoTIFFs of testdata, the bundled sample included (the others must be refused). Sparse files are
+     * left out: the plain decode fails on their missing blocks (OtherFormatsTest checks them against the values
+     * they were made from).
+     */
     static List<Path> tiffs() throws IOException {
         List<Path> files = new ArrayList<>();
         for (String dir : List.of("testdata/dem", "testdata/variants", "testdata/formats",
@@ -33,6 +37,7 @@ class TiffReferenceDecodeTest {
             try (Stream<Path> s = Files.list(Path.of(dir))) {
                 s.filter(p -> p.toString().endsWith(".tif"))
                         .filter(p -> !p.getFileName().toString().matches(".*_(zstd|cint16|rotated)\\.tif"))
+                        .filter(p -> !p.getFileName().toString().contains("_sparse_"))
                         .sorted().forEach(files::add);
             }
         }
