@@ -70,36 +70,48 @@ public final class DemReader {
             long bandBytes = BlockReader.bandBytes(source, cells, d);
             MemoryGuard.requireFits(file, outW, outH, bandBytes, "read a window or a"
                     + " decimated version, or give Java more heap with -Xmx");
-            int unit = d * Math.max(1, source.naturalRowBlock()) / gcd(d, Math.max(1, source.naturalRowBlock()));
-            long units = (cells.height() + unit - 1) / unit;
-            long byCells = (long) cells.width() * cells.height() / Math.max(1, minCellsPerPart);
-            int parts = source.readsRowsIndependently()
-                    ? (int) Math.max(1, Math.min(Math.min(parallelism, units), byCells)) : 1;
-            // Each part holds a band buffer of its own: read with fewer parts rather than run out of heap.
-            while (parts > 1 && !MemoryGuard.fits(outW, outH, bandBytes * parts)) {
-                parts--;
-            }
             float[] values = new float[outW * outH];
-            ElevationStatistics stats;
-            if (parts == 1) {
-                stats = readPart(source, cells, d, info.noDataOrNaN(), values, 0, outW);
-            } else {
-                stats = readParts(file, source, cells, d, info.noDataOrNaN(), values, outW, parts,
-                        (int) ((units + parts - 1) / parts) * unit);
-            }
+            double noData = info.noDataOrNaN();
+            ElevationStatistics stats = readInParts(file, source, cells, d, parallelism, minCellsPerPart,
+                    (src, part, outRow0) -> BlockReader.read(src, part, d, noData,
+                            (row, v) -> System.arraycopy(v, 0, values, (outRow0 + row) * outW, outW)));
             GridGeometry g = info.geometry().window(cells.col(), cells.row(), cells.width(), cells.height());
             if (d > 1) {
                 g = g.decimate(d, d);
             }
-            return new LoadedDem(info, Dem.ofNormalized(values, g, info.noDataOrNaN()), stats);
+            return new LoadedDem(info, Dem.ofNormalized(values, g, noData), stats);
         }
     }
 
-    /** Reads {@code cells} of {@code source} into {@code values} from output row {@code outRow0} on. */
-    private static ElevationStatistics readPart(RasterSource source, Window.Cells cells, int d, double noData,
-                                                float[] values, int outRow0, int outW) throws IOException {
-        return BlockReader.read(source, cells, d, noData,
-                (row, v) -> System.arraycopy(v, 0, values, (outRow0 + row) * outW, outW));
+    /** Reads one row band of a window; its output rows start at {@code outRow0}. */
+    @FunctionalInterface
+    private interface PartReader {
+        ElevationStatistics read(RasterSource source, Window.Cells part, int outRow0) throws IOException;
+    }
+
+    /**
+     * Reads {@code cells} at decimation {@code d} in up to {@code parallelism} row bands at once when the format
+     * decodes rows independently, each of at least {@code minCellsPerPart} cells and starting at a multiple of the
+     * decimation and of the format's row block; fewer bands when their buffers would not fit in the heap that is
+     * left.
+     */
+    private static ElevationStatistics readInParts(Path file, RasterSource source, Window.Cells cells, int d,
+                                                   int parallelism, long minCellsPerPart, PartReader reader)
+            throws IOException {
+        int unit = d * Math.max(1, source.naturalRowBlock()) / gcd(d, Math.max(1, source.naturalRowBlock()));
+        long units = (cells.height() + unit - 1) / unit;
+        long byCells = (long) cells.width() * cells.height() / Math.max(1, minCellsPerPart);
+        int parts = source.readsRowsIndependently()
+                ? (int) Math.max(1, Math.min(Math.min(parallelism, units), byCells)) : 1;
+        long bandBytes = BlockReader.bandBytes(source, cells, d);
+        // Each part holds a band buffer of its own: read with fewer parts rather than run out of heap.
+        while (parts > 1 && !MemoryGuard.fits(0, 0, bandBytes * parts)) {
+            parts--;
+        }
+        if (parts == 1) {
+            return reader.read(source, cells, 0);
+        }
+        return readParts(file, source, cells, d, parts, (int) ((units + parts - 1) / parts) * unit, reader);
     }
 
     /**
@@ -107,8 +119,8 @@ public final class DemReader {
      * calling thread, the others each through a reader of its own on a thread of its own.
      */
     private static ElevationStatistics readParts(Path file, RasterSource first, Window.Cells cells, int d,
-                                                 double noData, float[] values, int outW, int parts,
-                                                 int rowsPerPart) throws IOException {
+                                                 int parts, int rowsPerPart, PartReader reader)
+            throws IOException {
         java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(parts - 1,
                 r -> {
                     Thread t = new Thread(r, "jdem846-read");
@@ -126,12 +138,12 @@ public final class DemReader {
                         Math.min(rowsPerPart, cells.height() - row0));
                 others.add(pool.submit(() -> {
                     try (RasterSource own = open(file)) {
-                        return readPart(own, part, d, noData, values, row0 / d, outW);
+                        return reader.read(own, part, row0 / d);
                     }
                 }));
             }
-            ElevationStatistics stats = readPart(first, new Window.Cells(cells.col(), cells.row(), cells.width(),
-                    Math.min(rowsPerPart, cells.height())), d, noData, values, 0, outW);
+            ElevationStatistics stats = reader.read(first, new Window.Cells(cells.col(), cells.row(),
+                    cells.width(), Math.min(rowsPerPart, cells.height())), 0);
             for (java.util.concurrent.Future<ElevationStatistics> f : others) {
                 stats = stats.merge(f.get());
             }
@@ -166,13 +178,20 @@ public final class DemReader {
 
     /**
      * Min, max and valid count of the whole file, streamed band by band without holding the grid in memory (so
-     * it works for grids larger than the heap).
+     * it works for grids larger than the heap), in row bands read at once as {@link #load} reads them.
      */
     public static ElevationStatistics statistics(Path file) throws IOException {
+        return statistics(file, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
+    }
+
+    /** {@link #statistics(Path)} in up to {@code parallelism} bands of at least {@code minCellsPerPart} cells. */
+    static ElevationStatistics statistics(Path file, int parallelism, long minCellsPerPart) throws IOException {
         try (RasterSource source = open(file)) {
             DemInfo info = source.info();
-            return BlockReader.read(source, new Window.Cells(0, 0, info.width(), info.height()), 1,
-                    info.noDataOrNaN(), (row, v) -> { });
+            double noData = info.noDataOrNaN();
+            return readInParts(file, source, new Window.Cells(0, 0, info.width(), info.height()), 1, parallelism,
+                    minCellsPerPart, (src, part, outRow0) -> BlockReader.read(src, part, 1, noData,
+                            (row, v) -> { }));
         }
     }
 

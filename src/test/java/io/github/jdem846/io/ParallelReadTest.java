@@ -53,4 +53,16 @@ class ParallelReadTest {
             }
         }
     }
+
+    @Test
+    void fileStatisticsStreamedInBandsEqualTheWholeGrids() throws IOException {
+        for (String name : FILES) {
+            Path file = Path.of(name);
+            ElevationStatistics whole = ElevationStatistics.of(DemReader.read(file).backingArray());
+            for (int parallelism : new int[] {1, 2, 3, 7}) {
+                assertEquals(whole, DemReader.statistics(file, parallelism, 1), name + " in " + parallelism
+                        + " bands");
+            }
+        }
+    }
 }
