@@ -3,10 +3,8 @@ package io.github.jdem846.io;
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.raster.GridGeometry;
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.Reader;
-import java.nio.charset.StandardCharsets;
+import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -17,8 +15,9 @@ import java.util.Locale;
  * ESRI ASCII grid ({@code .asc}): a header of {@code key value} lines ({@code ncols}, {@code nrows},
  * {@code xllcorner|xllcenter}, {@code yllcorner|yllcenter}, {@code cellsize} or {@code dx}/{@code dy},
  * optional {@code NODATA_value}) followed by {@code nrows × ncols} decimal numbers, north row first, separated by
- * any white space. Text can only be read in order: rows are parsed forward, and a read of an earlier row starts
- * over from the top of the file.
+ * any white space. Text can only be read in order: rows are parsed forward (values outside the columns asked for,
+ * and rows before them, are passed over unparsed), and a read of an earlier row starts over from the top of the
+ * file.
  */
 final class EsriAsciiSource implements RasterSource {
 
@@ -66,14 +65,15 @@ final class EsriAsciiSource implements RasterSource {
         }
         for (; nextRow < row; nextRow++) {
             for (int c = 0; c < cols; c++) {
-                tokens.nextValue(nextRow, c);
+                tokens.skipValue(nextRow, c);
             }
         }
         for (int r = 0; r < rows; r++, nextRow++) {
             for (int c = 0; c < cols; c++) {
-                float v = tokens.nextValue(nextRow, c);
                 if (c >= col && c < col + width) {
-                    dst[r * width + c - col] = v;
+                    dst[r * width + c - col] = tokens.nextValue(nextRow, c);
+                } else {
+                    tokens.skipValue(nextRow, c);
                 }
             }
         }
@@ -86,17 +86,24 @@ final class EsriAsciiSource implements RasterSource {
         }
     }
 
-    /** White-space separated words of the file. */
+    /**
+     * White-space separated words of the file, read from a byte buffer of its own (ISO-8859-1; white space as
+     * {@link Character#isWhitespace}): a {@code Reader} read char by char costs more than twice the parsing.
+     */
     private static final class Tokens implements AutoCloseable {
         private final Path file;
-        private final Reader in;
-        private final StringBuilder word = new StringBuilder(24);
+        private final InputStream in;
+        private final byte[] buffer = new byte[1 << 16];
+        private int position;
+        private int limit;
+        private char[] word = new char[32];
+        private int wordLength;
         private String pushedBack;
         private long valuesRead;
 
         Tokens(Path file) throws IOException {
             this.file = file;
-            this.in = new BufferedReader(Files.newBufferedReader(file, StandardCharsets.ISO_8859_1), 1 << 16);
+            this.in = Files.newInputStream(file);
         }
 
         /** Reads the {@code key value} pairs before the first number into {@code lines}. */
@@ -121,8 +128,7 @@ final class EsriAsciiSource implements RasterSource {
         float nextValue(long row, int col) throws IOException {
             String w = next();
             if (w == null) {
-                throw new DemFormatException(file, "ends after " + valuesRead + " values, at row " + row
-                        + ", column " + col + "; the header promises ncols × nrows values (truncated?)");
+                throw truncated(row, col);
             }
             valuesRead++;
             try {
@@ -133,24 +139,64 @@ final class EsriAsciiSource implements RasterSource {
             }
         }
 
+        /** Passes over a value that is not wanted, without parsing it. */
+        void skipValue(long row, int col) throws IOException {
+            if (pushedBack != null) {
+                pushedBack = null;
+            } else if (!readWord()) {
+                throw truncated(row, col);
+            }
+            valuesRead++;
+        }
+
+        private DemFormatException truncated(long row, int col) {
+            return new DemFormatException(file, "ends after " + valuesRead + " values, at row " + row
+                    + ", column " + col + "; the header promises ncols × nrows values (truncated?)");
+        }
+
         private String next() throws IOException {
             if (pushedBack != null) {
                 String w = pushedBack;
                 pushedBack = null;
                 return w;
             }
-            word.setLength(0);
-            int c;
-            while ((c = in.read()) >= 0 && Character.isWhitespace(c)) {
-                // skip separators
-            }
-            if (c < 0) {
-                return null;
-            }
+            return readWord() ? new String(word, 0, wordLength) : null;
+        }
+
+        /** Reads the next word into {@code word}; false at the end of the file. */
+        private boolean readWord() throws IOException {
+            int b;
             do {
-                word.append((char) c);
-            } while ((c = in.read()) >= 0 && !Character.isWhitespace(c));
-            return word.toString();
+                b = read();
+            } while (b >= 0 && isWhitespace(b));
+            if (b < 0) {
+                return false;
+            }
+            wordLength = 0;
+            do {
+                if (wordLength == word.length) {
+                    word = java.util.Arrays.copyOf(word, word.length * 2);
+                }
+                word[wordLength++] = (char) b;
+            } while ((b = read()) >= 0 && !isWhitespace(b));
+            return true;
+        }
+
+        private int read() throws IOException {
+            if (position == limit) {
+                limit = in.read(buffer, 0, buffer.length);
+                position = 0;
+                if (limit <= 0) {
+                    limit = 0;
+                    return -1;
+                }
+            }
+            return buffer[position++] & 0xFF;
+        }
+
+        /** {@link Character#isWhitespace} for ISO-8859-1: tab to carriage return, the separators 28–31, space. */
+        private static boolean isWhitespace(int b) {
+            return b == ' ' || (b >= 9 && b <= 13) || (b >= 28 && b <= 31);
         }
 
         private static boolean isNumber(String w) {
