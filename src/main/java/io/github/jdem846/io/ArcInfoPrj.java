@@ -101,7 +101,8 @@ final class ArcInfoPrj {
                 throw new IllegalArgumentException("the ArcInfo projection file's UTM Zone is '"
                         + keys.getOrDefault("ZONE", "") + "'; it must be 1 to 60");
             }
-            boolean south = number(keys.getOrDefault("YSHIFT", "0")) != 0;
+            double yShift = number(keys.getOrDefault("YSHIFT", "0"));
+            boolean south = yShift == yShift && yShift != 0; // GDAL: a false northing means the south
             Optional<UtmZone> known = utmCode(geodetic, zone, south).flatMap(UtmZone::ofEpsg);
             CrsInfo crs = known.isPresent() && unit == 1.0 ? known.get().crsInfo()
                     : CrsInfo.projected(geodetic.name() + " / UTM zone " + zone + (south ? "S" : "N"),

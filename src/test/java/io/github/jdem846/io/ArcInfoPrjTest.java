@@ -81,6 +81,8 @@ class ArcInfoPrjTest {
         assertEquals(1.0, wgs84.linearUnitMeters());
         assertEquals(32733, parse(prj("UTM", "WGS84", "WGS84", "METERS", "Zone 33\nYshift 10000000\n"),
                 notices).epsg());
+        assertEquals(32611, parse(prj("UTM", "WGS84", "WGS84", "METERS", "Zone 11\nYshift none\n"), notices)
+                .epsg(), "GDAL reads a Yshift that is not a number as 0: north");
         assertEquals(26913, parse(prj("UTM", "NAD83", "GRS1980", "METERS", "Zone 13\n"), notices).epsg());
         CrsInfo nad27 = parse(prj("UTM", "NAD27", "CLARKE1866", "METERS", "Zone 13\n"), notices);
         assertEquals(26713, nad27.epsg());
