@@ -73,6 +73,21 @@ zeros[8:24, :] = 0                      # strips 1 and 2 of 8 rows
 write_like(VOLCANO, "volcano_sparse_strip8_zeros.tif", [zeros], gdal.GDT_Int16,
            options=["SPARSE_OK=TRUE", "BLOCKYSIZE=8", "COMPRESS=LZW", "PREDICTOR=2"])
 
+# Predictors on every integer width and on separate planes: jdem846 undoes predictors 2 and 3 itself.
+write_like(VOLCANO, "volcano_uint8_deflate_pred2.tif", [v.astype(np.uint8)], gdal.GDT_Byte,
+           options=["COMPRESS=DEFLATE", "PREDICTOR=2"])
+write_like(VOLCANO, "volcano_int8_minus100_lzw_pred2.tif", [(v - 100).astype(np.int8)], gdal.GDT_Byte,
+           options=["PIXELTYPE=SIGNEDBYTE", "COMPRESS=LZW", "PREDICTOR=2"])
+write_like(VOLCANO, "volcano_uint16_times300_lzw_pred2_bigendian.tif", [v.astype(np.uint16) * 300],
+           gdal.GDT_UInt16, options=["COMPRESS=LZW", "PREDICTOR=2", "ENDIANNESS=BIG"])
+write_like(VOLCANO, "volcano_uint32_times20000000_deflate_pred2_tile16.tif", [v.astype(np.uint32) * 20000000],
+           gdal.GDT_UInt32, options=["COMPRESS=DEFLATE", "PREDICTOR=2", "TILED=YES", "BLOCKXSIZE=16",
+                                     "BLOCKYSIZE=16"])
+write_like(VOLCANO, "volcano_2bands_planar_float32_pred3_tile16.tif",
+           [v.astype(np.float32) + np.float32(0.25), np.full(v.shape, -7.5, dtype=np.float32)], gdal.GDT_Float32,
+           options=["INTERLEAVE=BAND", "TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16", "COMPRESS=DEFLATE",
+                    "PREDICTOR=3"])
+
 # PixelIsPoint: the same grid, georeferenced on cell centres.
 translate(VOLCANO, "volcano_pixelispoint.tif", "-mo", "AREA_OR_POINT=Point")
 translate(VOLCANO, "volcano_int16_decimetres_scale0.1_offset50_nodata440.tif", "-ot", "Int16", "-scale", "94", "195",

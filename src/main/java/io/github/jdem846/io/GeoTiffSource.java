@@ -220,6 +220,10 @@ final class GeoTiffSource implements RasterSource {
 
     /** Decodes the strips or tiles covering the cells, none of them sparse, through a synthetic directory. */
     private void decodeSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
+        if (layout.predictorUndoneHere()) {
+            decodeUndoingPredictor(col, row, width, rows, dst);
+            return;
+        }
         TiffSubset.Subset subset = TiffSubset.of(layout, col, row, width, rows);
         Raster raster;
         DecodeTarget target;
@@ -245,6 +249,52 @@ final class GeoTiffSource implements RasterSource {
                     row - subset.y0(), width, rows, dst);
         } else {
             copyBand0(raster, col - subset.x0(), row - subset.y0(), width, rows, dst);
+        }
+    }
+
+    /**
+     * Like {@link #decodeSubset}, with TwelveMonkeys only decompressing the blocks ({@link TiffSubset#ofBytes})
+     * and the predictor undone here, row by row of each block ({@link PredictorUndo}).
+     */
+    private void decodeUndoingPredictor(int col, int row, int width, int rows, float[] dst) throws IOException {
+        TiffSubset.Subset subset = TiffSubset.ofBytes(layout, col, row, width, rows);
+        int bytes = layout.bytesPerSample();
+        int rowBytes = subset.width() * bytes;
+        byte[] raw;
+        ImageReader r = new TIFFImageReaderSpi().createReaderInstance();
+        try (ImageInputStream in = new SplicedImageInputStream(subset.head(), subset.shift(), channel)) {
+            r.setInput(in, true, true);
+            DecodeTarget target = DecodeTarget.forRawType(r.getRawImageType(0), rowBytes, subset.height());
+            if (target == null || !(target.array() instanceof byte[] array)) {
+                throw new IOException("the decoder gave no byte raster for the decompressed blocks");
+            }
+            ImageReadParam param = r.getDefaultReadParam();
+            param.setDestination(target);
+            Raster raster = r.readRaster(0, param);
+            if (raster != target.getRaster() || raster.getWidth() < rowBytes
+                    || raster.getHeight() < subset.height()) {
+                throw new IOException("the decoder did not fill the " + rowBytes + "×" + subset.height()
+                        + " byte raster of the decompressed blocks");
+            }
+            raw = array;
+        } catch (IOException | RuntimeException e) {
+            throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                    + " (truncated or corrupt TIFF?): " + describe(e), e);
+        } finally {
+            r.dispose();
+        }
+        // the predictor runs along each row of each block: a tile's width, or a strip's (the image's)
+        int segment = layout.tiled() ? layout.blockWidth() : layout.width();
+        int first = col - subset.x0();
+        int end = first + width;
+        for (int y = 0; y < rows; y++) {
+            int base = (row - subset.y0() + y) * rowBytes;
+            for (int s0 = first / segment * segment; s0 < end; s0 += segment) {
+                int from = Math.max(first, s0);
+                int to = Math.min(end, s0 + segment);
+                PredictorUndo.row(raw, base + s0 * bytes, segment, layout.predictor(), info.dataType(),
+                        layout.order(), from - s0, to - from, dst, y * width + from - first);
+            }
         }
     }
 

@@ -42,6 +42,27 @@ final class TiffSubset {
             return offsets[index] == 0 || byteCounts[index] == 0;
         }
 
+        /**
+         * Whether the file's predictor is undone here rather than by the decoder ({@link #ofBytes}): predictor 2
+         * on 8/16/32-bit integers or 3 on 32/64-bit floats, one sample per pixel (or band 1 of separate planes),
+         * LZW or Deflate. TwelveMonkeys 3.15.0 undoes them through byte-by-byte streams, most of a Deflate read.
+         */
+        boolean predictorUndoneHere() {
+            boolean oneSample = samplesPerPixel == 1 || planar == 2;
+            boolean compressed = compression == 5 || compression == 8 || compression == 32946;
+            int bits = (int) bitsPerSample[0];
+            int format = (int) sampleFormat[0];
+            boolean integers = predictor == 2 && (format == 1 || format == 2) && (bits == 8 || bits == 16
+                    || bits == 32);
+            boolean floats = predictor == 3 && format == 3 && (bits == 32 || bits == 64);
+            return oneSample && compressed && (integers || floats);
+        }
+
+        /** Bytes of one sample of band 1. */
+        int bytesPerSample() {
+            return (int) bitsPerSample[0] / 8;
+        }
+
         /** Whether any block under columns {@code [col, col+w)} and rows {@code [row, row+h)} is sparse. */
         boolean coversSparse(int col, int row, int w, int h) {
             for (int br = row / blockHeight; br <= (row + h - 1) / blockHeight; br++) {
@@ -67,13 +88,29 @@ final class TiffSubset {
 
     /** The subset of whole blocks covering columns {@code [col, col+w)} and rows {@code [row, row+h)}. */
     static Subset of(Layout l, int col, int row, int w, int h) {
+        return build(l, col, row, w, h, false);
+    }
+
+    /**
+     * The same blocks declared as 8-bit bytes without a predictor, each block row as wide as the block in bytes
+     * ({@code blockWidth × bytesPerSample}; tiles are never cropped at the east edge, so every block row is
+     * whole): the decoder only decompresses, and the caller undoes the predictor ({@link PredictorUndo}). The
+     * subset's x0, y0, width and height are in samples, its decoded image {@code width × bytesPerSample} bytes
+     * wide.
+     */
+    static Subset ofBytes(Layout l, int col, int row, int w, int h) {
+        return build(l, col, row, w, h, true);
+    }
+
+    private static Subset build(Layout l, int col, int row, int w, int h, boolean bytes) {
         int bc0 = col / l.blockWidth();
         int bc1 = (col + w + l.blockWidth() - 1) / l.blockWidth();
         int br0 = row / l.blockHeight();
         int br1 = (row + h + l.blockHeight() - 1) / l.blockHeight();
         int x0 = bc0 * l.blockWidth();
         int y0 = br0 * l.blockHeight();
-        int sw = Math.min(bc1 * l.blockWidth(), l.width()) - x0;
+        int sw = (bytes && l.tiled() ? bc1 * l.blockWidth() : Math.min(bc1 * l.blockWidth(), l.width())) - x0;
+        int b = bytes ? l.bytesPerSample() : 1;
         int sh = Math.min(br1 * l.blockHeight(), l.height()) - y0;
         int n = (bc1 - bc0) * (br1 - br0);
         long[] offsets = new long[n];
@@ -90,22 +127,24 @@ final class TiffSubset {
         boolean onlyBand1 = l.planar() == 2 || l.samplesPerPixel() == 1;
         int spp = onlyBand1 ? 1 : l.samplesPerPixel();
         List<long[]> entries = new ArrayList<>(); // {tag, type, values...}
-        entries.add(entry(256, LONG8, sw));
+        entries.add(entry(256, LONG8, (long) sw * b));
         entries.add(entry(257, LONG8, sh));
-        entries.add(entry(258, SHORT, onlyBand1 ? new long[] {l.bitsPerSample()[0]} : l.bitsPerSample()));
+        entries.add(entry(258, SHORT, bytes ? new long[] {8}
+                : onlyBand1 ? new long[] {l.bitsPerSample()[0]} : l.bitsPerSample()));
         entries.add(entry(259, SHORT, l.compression()));
         entries.add(entry(262, SHORT, spp == 1 ? 1 : l.photometric()));
         entries.add(entry(277, SHORT, spp));
         entries.add(entry(284, SHORT, 1));
-        if (l.predictor() != 1) {
+        if (l.predictor() != 1 && !bytes) {
             entries.add(entry(317, SHORT, l.predictor()));
         }
         if (!onlyBand1 && l.extraSamples().length > 0) {
             entries.add(entry(338, SHORT, l.extraSamples()));
         }
-        entries.add(entry(339, SHORT, onlyBand1 ? new long[] {l.sampleFormat()[0]} : l.sampleFormat()));
+        entries.add(entry(339, SHORT, bytes ? new long[] {1}
+                : onlyBand1 ? new long[] {l.sampleFormat()[0]} : l.sampleFormat()));
         if (l.tiled()) {
-            entries.add(entry(322, LONG8, l.blockWidth()));
+            entries.add(entry(322, LONG8, (long) l.blockWidth() * b));
             entries.add(entry(323, LONG8, l.blockHeight()));
             entries.add(entry(324, LONG8, offsets));
             entries.add(entry(325, LONG8, counts));

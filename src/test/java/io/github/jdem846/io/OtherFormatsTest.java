@@ -53,7 +53,12 @@ class OtherFormatsTest {
         "volcano_int8_minus100.tif, Int8, 1, -100",
         "volcano_int32_minus1000.tif, Int32, 1, -1000",
         "volcano_uint32_times20000000.tif, UInt32, 20000000, 0",
-        "volcano_float64_times1.5.tif, Float64, 1.5, 0"})
+        "volcano_float64_times1.5.tif, Float64, 1.5, 0",
+        "volcano_uint8_deflate_pred2.tif, Byte, 1, 0",
+        "volcano_int8_minus100_lzw_pred2.tif, Int8, 1, -100",
+        "volcano_uint16_times300_lzw_pred2_bigendian.tif, UInt16, 300, 0",
+        "volcano_uint32_times20000000_deflate_pred2_tile16.tif, UInt32, 20000000, 0",
+        "volcano_2bands_planar_float32_pred3_tile16.tif, Float32, 1, 0.25"})
     void sampleTypesDecodeToTheValuesTheyWereMadeFrom(String name, String type, double scale, double offset)
             throws IOException {
         LoadedDem loaded = DemReader.load(FORMATS.resolve(name), ReadRequest.FULL);
