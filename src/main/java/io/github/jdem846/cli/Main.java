@@ -65,7 +65,7 @@ public final class Main implements Runnable {
         if (!java.util.Arrays.asList(args).contains("--verbose")) {
             quietLibraryLogs();
         }
-        CrsWarmUp.start(args);
+        InputWarmUp.start(args);
         System.exit(execute(commandLine(args), args));
     }
 

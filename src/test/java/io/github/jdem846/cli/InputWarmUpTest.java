@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** Which argument the start-up warm-up takes for the input DEM; it must never fail, whatever the arguments. */
-class CrsWarmUpTest {
+class InputWarmUpTest {
 
     private static final String JACKSBORO = "testdata/dem/jacksboro_srtm3s_wgs84.tif";
     private static final String BT_FLT = "testdata/dem/bigtujunga_srtm30m_utm11n.flt";
@@ -26,29 +26,29 @@ class CrsWarmUpTest {
         Files.writeString(colours, "0 0 0 0\n100 255 255 255\n");
         Path oldOutput = dir.resolve("old.png");
         Files.write(oldOutput, new byte[] {(byte) 0x89, 'P', 'N', 'G'});
-        assertEquals(Optional.of(Path.of(JACKSBORO)), CrsWarmUp.readFirstDem(new String[] {"tint", "--tint",
+        assertEquals(Optional.of(Path.of(JACKSBORO)), InputWarmUp.readFirstDem(new String[] {"tint", "--tint",
             colours.toString(), JACKSBORO, "-o", oldOutput.toString()}));
-        assertEquals(Optional.of(Path.of(BT_FLT)), CrsWarmUp.readFirstDem(new String[] {"hillshade", "-o",
+        assertEquals(Optional.of(Path.of(BT_FLT)), InputWarmUp.readFirstDem(new String[] {"hillshade", "-o",
             oldOutput.toString(), "--sun-azimuth=-720", BT_FLT, JACKSBORO}));
     }
 
     @Test
     void latitudeAndLongitudeAreWarmedOnlyForTheCommandsThatNeedThem() {
-        assertTrue(CrsWarmUp.needsLatLon(new String[] {"info", JACKSBORO}));
-        assertTrue(CrsWarmUp.needsLatLon(new String[] {"render", JACKSBORO, "-o", "x.png", "--sun-time",
+        assertTrue(InputWarmUp.needsLatLon(new String[] {"info", JACKSBORO}));
+        assertTrue(InputWarmUp.needsLatLon(new String[] {"render", JACKSBORO, "-o", "x.png", "--sun-time",
             "2024-06-21T17:00Z"}));
-        assertTrue(CrsWarmUp.needsLatLon(new String[] {"shadows", JACKSBORO, "--sun-time=2024-06-21T17:00Z"}));
-        assertTrue(CrsWarmUp.needsLatLon(new String[] {"hillshade", JACKSBORO, "-o", "x.png", "--world-file"}));
-        assertFalse(CrsWarmUp.needsLatLon(new String[] {"hillshade", JACKSBORO, "-o", "info"}));
-        assertFalse(CrsWarmUp.needsLatLon(new String[] {"render", "--sun-azimuth", "300"}));
-        assertFalse(CrsWarmUp.needsLatLon(new String[0]));
+        assertTrue(InputWarmUp.needsLatLon(new String[] {"shadows", JACKSBORO, "--sun-time=2024-06-21T17:00Z"}));
+        assertTrue(InputWarmUp.needsLatLon(new String[] {"hillshade", JACKSBORO, "-o", "x.png", "--world-file"}));
+        assertFalse(InputWarmUp.needsLatLon(new String[] {"hillshade", JACKSBORO, "-o", "info"}));
+        assertFalse(InputWarmUp.needsLatLon(new String[] {"render", "--sun-azimuth", "300"}));
+        assertFalse(InputWarmUp.needsLatLon(new String[0]));
     }
 
     @Test
     void noDemAmongTheArgumentsGivesNothing() {
-        assertEquals(Optional.empty(), CrsWarmUp.readFirstDem(new String[0]));
-        assertEquals(Optional.empty(), CrsWarmUp.readFirstDem(new String[] {"render", "-o", "x.png"}));
-        assertEquals(Optional.empty(), CrsWarmUp.readFirstDem(new String[] {"hillshade", "missing.tif",
+        assertEquals(Optional.empty(), InputWarmUp.readFirstDem(new String[0]));
+        assertEquals(Optional.empty(), InputWarmUp.readFirstDem(new String[] {"render", "-o", "x.png"}));
+        assertEquals(Optional.empty(), InputWarmUp.readFirstDem(new String[] {"hillshade", "missing.tif",
             dir.toString(), "\u0000bad", "--window=1,2,3,4"}));
     }
 }

@@ -8,8 +8,9 @@ import java.nio.file.Path;
 import java.util.Optional;
 
 /**
- * Reads the input's header on a daemon thread while picocli parses the command line, so that the reader's slow
- * first steps overlap with it: the TIFF decoder's classes and, only when the file needs them, Apache SIS's (about
+ * Reads the input's header and first rows on a daemon thread while picocli parses the command line, so that the
+ * reader's slow first steps overlap with it: the decoder's classes and first compilations and, only when the file
+ * needs them, Apache SIS's (about
  * 0.3 s on first use: a {@code .prj}, a projected GeoTIFF other than a UTM zone of {@link
  * io.github.jdem846.geo.UtmZone}). A lat/lon or UTM GeoTIFF, an SRTM tile or a file without CRS never starts SIS,
  * which would otherwise take a core from the command for nothing (docs/performance.md, "Start-up"). The input is
@@ -17,18 +18,21 @@ import java.util.Optional;
  * nothing is done. When the command will need latitude/longitude ({@link #needsLatLon}), the file's CRS is also
  * resolved by SIS here. Any failure here is ignored: the command reads the file again and reports its own errors.
  */
-final class CrsWarmUp {
+final class InputWarmUp {
 
-    private CrsWarmUp() {
+    private InputWarmUp() {
     }
 
     /** Starts the warm-up thread for the command line {@code args} and returns at once. */
     static void start(String[] args) {
         String[] copy = args.clone();
-        Thread t = new Thread(() -> run(copy), "jdem846-crs-warm-up");
+        Thread t = new Thread(() -> run(copy), "jdem846-input-warm-up");
         t.setDaemon(true);
         t.start();
     }
+
+    /** Time the reader warm-up may take: about picocli's start-up, after which the command reads for itself. */
+    private static final long READ_WARM_UP_NANOS = 250_000_000L;
 
     private static void run(String[] args) {
         try {
@@ -36,9 +40,30 @@ final class CrsWarmUp {
             if (dem.isPresent() && needsLatLon(args)) {
                 DemReader.inspect(dem.get()).geometry().geoLocator();   // SIS's CRS and transform, as the command will
             }
+            if (dem.isPresent()) {
+                warmUpReader(dem.get());
+            }
         } catch (IOException | RuntimeException | LinkageError e) {
             // ignored: see the class comment
         }
+    }
+
+    /**
+     * Reads the file's first rows a few times, so that the decoder's classes are loaded and its loops on their way
+     * to compiled code before the command's own read (a cold 4000² Deflate read took 0.83 s, 0.62 s after one such
+     * read, 0.46 s after twenty; docs/performance.md). At most an eighth of the file and {@link
+     * #READ_WARM_UP_NANOS} of time, on the core picocli's start-up leaves idle.
+     */
+    private static void warmUpReader(Path dem) throws IOException {
+        io.github.jdem846.io.DemInfo info = DemReader.inspect(dem);
+        int w = Math.min(info.width(), 512);
+        int h = (int) Math.max(1, Math.min(256, (long) info.width() * info.height() / 8 / w));
+        io.github.jdem846.io.ReadRequest firstRows = io.github.jdem846.io.ReadRequest.of(
+                io.github.jdem846.io.Window.cells(0, 0, w, Math.min(h, info.height())));
+        long start = System.nanoTime();
+        do {
+            DemReader.read(dem, firstRows);
+        } while (System.nanoTime() - start < READ_WARM_UP_NANOS);
     }
 
     /**
