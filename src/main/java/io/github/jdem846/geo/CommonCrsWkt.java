@@ -6,8 +6,8 @@ import java.util.Locale;
 import java.util.Optional;
 
 /**
- * Recognises, without Apache SIS, the WKT 1 (ESRI or OGC) of the CRSs most DEMs use: geographic WGS 84 and NAD83
- * in degrees, and the UTM zones of {@link UtmZone}'s families on them. Parsing a {@code .prj} with SIS costs about
+ * Recognises, without Apache SIS, the WKT 1 (ESRI or OGC) of the CRSs most DEMs use: geographic WGS 84, NAD83 and
+ * ETRS89 in degrees, and the UTM zones of {@link UtmZone}'s families on them. Parsing a {@code .prj} with SIS costs about
  * 0.35 s of a one-shot command (docs/performance.md); these CRSs are then known by their EPSG code, and
  * {@link CrsResolver#complete} builds SIS's definition only where latitude and longitude are needed, as for a
  * GeoTIFF's codes. Every number is checked (ellipsoid, prime meridian, units, all five projection parameters);
@@ -61,8 +61,11 @@ final class CommonCrsWkt {
             return Optional.empty();
         }
         if (root.keyword.equalsIgnoreCase("GEOGCS")) {
-            return geographicCode(root).flatMap(code -> Optional.of(code == 4326 ? CrsInfo.WGS84
-                    : CrsInfo.geographic("NAD83", 4269, Ellipsoid.GRS80)));
+            return geographicCode(root).map(code -> switch (code) {
+                case 4326 -> CrsInfo.WGS84;
+                case 4269 -> CrsInfo.geographic("NAD83", 4269, Ellipsoid.GRS80);
+                default -> CrsInfo.geographic("ETRS89", 4258, Ellipsoid.GRS80);
+            });
         }
         if (root.keyword.equalsIgnoreCase("PROJCS")) {
             return utm(root).map(UtmZone::crsInfo);
@@ -70,7 +73,7 @@ final class CommonCrsWkt {
         return Optional.empty();
     }
 
-    /** 4326 or 4269 for a GEOGCS of WGS 84 or NAD83 in degrees from Greenwich, else empty. */
+    /** 4326, 4269 or 4258 for a GEOGCS of WGS 84, NAD83 or ETRS89 in degrees from Greenwich, else empty. */
     private static Optional<Integer> geographicCode(Element geogcs) {
         Optional<Element> spheroid = geogcs.child("DATUM").flatMap(d -> d.child("SPHEROID"));
         Optional<Element> primem = geogcs.child("PRIMEM");
@@ -91,6 +94,10 @@ final class CommonCrsWkt {
         if ((datum.equals("NORTHAMERICAN1983") || datum.equals("NORTHAMERICANDATUM1983") || datum.equals("NAD83"))
                 && invF == 298.257222101) {
             return Optional.of(4269);
+        }
+        if ((datum.equals("ETRS1989") || datum.equals("EUROPEANTERRESTRIALREFERENCESYSTEM1989")
+                || datum.equals("ETRS89")) && invF == 298.257222101) {
+            return Optional.of(4258);
         }
         return Optional.empty();
     }
@@ -133,11 +140,15 @@ final class CommonCrsWkt {
             return Optional.empty();
         }
         boolean south = falseNorthing != 0;
-        if (base.get() == 4269 && south) {
-            return Optional.empty(); // NAD83's zones are all northern
+        if (base.get() != 4326 && south) {
+            return Optional.empty(); // NAD83's and ETRS89's zones are all northern
         }
-        int code = (base.get() == 4326 ? (south ? 32700 : 32600) : 26900) + (int) zone;
-        return UtmZone.ofEpsg(code);
+        int family = switch (base.get()) {
+            case 4326 -> south ? 32700 : 32600;
+            case 4269 -> 26900;
+            default -> 25800;
+        };
+        return UtmZone.ofEpsg(family + (int) zone); // empty outside the family's range of zones
     }
 
     /** Upper case without "D_" prefix, spaces, underscores and other punctuation: "D_WGS_1984" → "WGS1984". */

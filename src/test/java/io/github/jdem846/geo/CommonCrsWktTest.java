@@ -34,7 +34,8 @@ class CommonCrsWktTest {
     @ParameterizedTest
     @ValueSource(strings = {"epsg4326_esri.prj", "epsg4326_ogc.prj", "epsg4269_esri.prj", "epsg4269_ogc.prj",
         "epsg32611_esri.prj", "epsg32611_ogc.prj", "epsg32733_esri.prj", "epsg32733_ogc.prj",
-        "epsg26913_esri.prj", "epsg26913_ogc.prj", "../dem/bigtujunga_srtm30m_utm11n.prj",
+        "epsg26913_esri.prj", "epsg26913_ogc.prj", "epsg25832_esri.prj", "epsg25832_ogc.prj",
+        "epsg4258_esri.prj", "epsg4258_ogc.prj", "../dem/bigtujunga_srtm30m_utm11n.prj",
         "../dem/luxembourg_srtm30s_wgs84.prj", "../dem/jacksboro_srtm3s_wgs84.prj"})
     void recognisedWktIsTheCrsSisReads(String name) throws Exception {
         String wkt = read(name);
@@ -64,7 +65,7 @@ class CommonCrsWktTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"epsg25832_esri.prj", "epsg4267_esri.prj", "epsg4267_ogc.prj", "epsg2193_esri.prj",
+    @ValueSource(strings = {"epsg4267_esri.prj", "epsg4267_ogc.prj", "epsg2193_esri.prj",
         "epsg2193_ogc.prj", "epsg3857_esri.prj", "epsg3857_ogc.prj", "epsg26711_esri.prj", "epsg26711_ogc.prj",
         "../dem/maungawhau-volcano_10m_nztm-approx.prj", "../dem/vancouver-island_topobathy_2min_mercator.prj"})
     void otherCrsAreLeftToSis(String name) throws Exception {
@@ -85,6 +86,7 @@ class CommonCrsWktTest {
                         + "PARAMETER[\"Scale_Factor\",0.9996]"),
                 utm.replace("Transverse_Mercator", "Mercator"),
                 read("epsg26913_esri.prj").replace("False_Northing\",0.0", "False_Northing\",10000000.0"),
+                read("epsg25832_esri.prj").replace("Central_Meridian\",9.0", "Central_Meridian\",45.0"),
                 geographic.replace("PRIMEM[\"Greenwich\",0.0]", "PRIMEM[\"Paris\",2.33722917]"),
                 geographic.replace("0.0174532925199433", "0.015707963267949"),
                 geographic.replace("298.257223563", "298.3"),
