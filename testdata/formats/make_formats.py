@@ -88,6 +88,12 @@ write_like(VOLCANO, "volcano_2bands_planar_float32_pred3_tile16.tif",
            options=["INTERLEAVE=BAND", "TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16", "COMPRESS=DEFLATE",
                     "PREDICTOR=3"])
 
+# LZW without a predictor (jdem846 decompresses LZW itself).
+write_like(VOLCANO, "volcano_float32_plus0.5_lzw_tile16.tif", [v.astype(np.float32) + np.float32(0.5)],
+           gdal.GDT_Float32, options=["COMPRESS=LZW", "TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16"])
+write_like(VOLCANO, "volcano_int16_lzw_strip8_bigendian.tif", [v.astype(np.int16)], gdal.GDT_Int16,
+           options=["COMPRESS=LZW", "BLOCKYSIZE=8", "ENDIANNESS=BIG"])
+
 # PixelIsPoint: the same grid, georeferenced on cell centres.
 translate(VOLCANO, "volcano_pixelispoint.tif", "-mo", "AREA_OR_POINT=Point")
 translate(VOLCANO, "volcano_int16_decimetres_scale0.1_offset50_nodata440.tif", "-ot", "Int16", "-scale", "94", "195",

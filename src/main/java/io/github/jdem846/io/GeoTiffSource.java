@@ -220,6 +220,9 @@ final class GeoTiffSource implements RasterSource {
 
     /** Decodes the strips or tiles covering the cells, none of them sparse, through a synthetic directory. */
     private void decodeSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
+        if (layout.lzwDecodedHere() && decodeLzw(col, row, width, rows, dst)) {
+            return;
+        }
         if (layout.predictorUndoneHere()) {
             decodeUndoingPredictor(col, row, width, rows, dst);
             return;
@@ -250,6 +253,67 @@ final class GeoTiffSource implements RasterSource {
         } else {
             copyBand0(raster, col - subset.x0(), row - subset.y0(), width, rows, dst);
         }
+    }
+
+    /**
+     * Like {@link #decodeSubset} for LZW blocks, decompressed by {@link TiffLzw} from bytes read here and turned
+     * into samples by {@link PredictorUndo}.
+     *
+     * @return false, with nothing decided, when a block is in the old, bit-reversed LZW (left to TwelveMonkeys)
+     */
+    private boolean decodeLzw(int col, int row, int width, int rows, float[] dst) throws IOException {
+        int bw = layout.blockWidth();
+        int bh = layout.blockHeight();
+        int bytes = layout.bytesPerSample();
+        int segment = layout.tiled() ? bw : layout.width();
+        for (int by = row / bh * bh; by < row + rows; by += bh) {
+            int blockRows = layout.tiled() ? bh : Math.min(bh, layout.height() - by);
+            byte[] block = new byte[segment * blockRows * bytes];
+            for (int bx = col / bw * bw; bx < col + width; bx += bw) {
+                int index = by / bh * layout.blocksAcross() + bx / bw;
+                byte[] compressed = readBlock(layout.offsets()[index], layout.byteCounts()[index]);
+                if (!TiffLzw.isNewStyle(compressed, compressed.length)) {
+                    return false;
+                }
+                int got;
+                try {
+                    got = TiffLzw.decode(compressed, compressed.length, block);
+                } catch (IOException e) {
+                    throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                            + " (truncated or corrupt TIFF?): " + e.getMessage(), e);
+                }
+                if (got < block.length) {
+                    throw new DemFormatException(file, "the LZW data of " + (layout.tiled() ? "tile " : "strip ")
+                            + index + " end after " + got + " of " + block.length + " bytes (truncated or corrupt"
+                            + " TIFF?)");
+                }
+                int x0 = Math.max(bx, col);
+                int x1 = Math.min(Math.min(bx + bw, layout.width()), col + width);
+                for (int y = Math.max(by, row); y < Math.min(by + blockRows, row + rows); y++) {
+                    PredictorUndo.row(block, (y - by) * segment * bytes, segment, layout.predictor(),
+                            info.dataType(), layout.order(), x0 - bx, x1 - x0, dst, (y - row) * width + x0 - col);
+                }
+            }
+        }
+        return true;
+    }
+
+    /** The stored bytes of one strip or tile. */
+    private byte[] readBlock(long offset, long count) throws IOException {
+        if (count > Integer.MAX_VALUE - 8) {
+            throw new DemFormatException(file, "a strip or tile of " + count + " bytes is too large to read");
+        }
+        byte[] b = new byte[(int) count];
+        ByteBuffer buffer = ByteBuffer.wrap(b);
+        long at = offset;
+        while (buffer.hasRemaining()) {
+            int n = channel.read(buffer, at);
+            if (n < 0) {
+                throw new DemFormatException(file, "the file ends inside a strip or tile (truncated?)");
+            }
+            at += n;
+        }
+        return b;
     }
 
     /**

@@ -4,7 +4,7 @@ import java.nio.ByteOrder;
 
 /**
  * Undoes a TIFF predictor on one row of one strip or tile, decompressed but otherwise raw, and converts samples of
- * it to float32 (one sample per pixel):
+ * it to float32 (one sample per pixel); predictor 1 (none) only converts:
  * <ul>
  *   <li>predictor 2 (horizontal differencing, TIFF 6.0 §14): each integer sample is stored as its difference to the
  *       one before, modulo 2^bits, in the file's byte order;</li>
@@ -27,6 +27,10 @@ final class PredictorUndo {
     static void row(byte[] raw, int off, int samples, int predictor, SampleType type, ByteOrder order, int from,
                     int n, float[] dst, int dstOff) {
         int bytes = type.bytes();
+        if (predictor == 1) {
+            plain(raw, off, type, order == ByteOrder.LITTLE_ENDIAN, from, n, dst, dstOff);
+            return;
+        }
         if (predictor == 3) {
             int length = samples * bytes;
             for (int i = off + 1; i < off + length; i++) {
@@ -82,6 +86,32 @@ final class PredictorUndo {
                 }
             }
         }
+    }
+
+    /** Samples {@code [from, from + n)} of a row stored without a predictor, in the file's byte order. */
+    private static void plain(byte[] raw, int off, SampleType type, boolean little, int from, int n, float[] dst,
+                              int dstOff) {
+        int bytes = type.bytes();
+        for (int k = 0; k < n; k++) {
+            int at = off + (from + k) * bytes;
+            dst[dstOff + k] = switch (type) {
+                case INT8 -> raw[at];
+                case UINT8 -> raw[at] & 0xFF;
+                case INT16 -> (short) uint16(raw, at, little);
+                case UINT16 -> uint16(raw, at, little);
+                case INT32 -> int32(raw, at, little);
+                case UINT32 -> int32(raw, at, little) & 0xFFFFFFFFL;
+                case FLOAT32 -> Float.intBitsToFloat(int32(raw, at, little));
+                case FLOAT64 -> (float) Double.longBitsToDouble(little
+                        ? (int32(raw, at, true) & 0xFFFFFFFFL) | (long) int32(raw, at + 4, true) << 32
+                        : (long) int32(raw, at, false) << 32 | (int32(raw, at + 4, false) & 0xFFFFFFFFL));
+                default -> throw new IllegalArgumentException("no binary samples of type " + type);
+            };
+        }
+    }
+
+    private static int uint16(byte[] raw, int at, boolean little) {
+        return little ? (raw[at] & 0xFF) | (raw[at + 1] & 0xFF) << 8 : (raw[at] & 0xFF) << 8 | (raw[at + 1] & 0xFF);
     }
 
     private static int int32(byte[] raw, int at, boolean little) {

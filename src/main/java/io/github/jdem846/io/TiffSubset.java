@@ -58,6 +58,20 @@ final class TiffSubset {
             return oneSample && compressed && (integers || floats);
         }
 
+        /**
+         * Whether LZW blocks are decompressed here ({@link TiffLzw}) rather than by the decoder: LZW with
+         * predictor 1, 2 or 3 (as {@link #predictorUndoneHere}), one sample per pixel or band 1 of separate planes,
+         * samples of 8, 16, 32 or 64 bits.
+         */
+        boolean lzwDecodedHere() {
+            boolean oneSample = samplesPerPixel == 1 || planar == 2;
+            int bits = (int) bitsPerSample[0];
+            int format = (int) sampleFormat[0];
+            boolean plain = predictor == 1 && (format == 1 || format == 2 ? bits == 8 || bits == 16 || bits == 32
+                    : format == 3 && (bits == 32 || bits == 64));
+            return compression == 5 && oneSample && (plain || predictorUndoneHere());
+        }
+
         /** Bytes of one sample of band 1. */
         int bytesPerSample() {
             return (int) bitsPerSample[0] / 8;

@@ -58,7 +58,9 @@ class OtherFormatsTest {
         "volcano_int8_minus100_lzw_pred2.tif, Int8, 1, -100",
         "volcano_uint16_times300_lzw_pred2_bigendian.tif, UInt16, 300, 0",
         "volcano_uint32_times20000000_deflate_pred2_tile16.tif, UInt32, 20000000, 0",
-        "volcano_2bands_planar_float32_pred3_tile16.tif, Float32, 1, 0.25"})
+        "volcano_2bands_planar_float32_pred3_tile16.tif, Float32, 1, 0.25",
+        "volcano_float32_plus0.5_lzw_tile16.tif, Float32, 1, 0.5",
+        "volcano_int16_lzw_strip8_bigendian.tif, Int16, 1, 0"})
     void sampleTypesDecodeToTheValuesTheyWereMadeFrom(String name, String type, double scale, double offset)
             throws IOException {
         LoadedDem loaded = DemReader.load(FORMATS.resolve(name), ReadRequest.FULL);
