@@ -220,7 +220,7 @@ final class GeoTiffSource implements RasterSource {
 
     /** Decodes the strips or tiles covering the cells, none of them sparse, through a synthetic directory. */
     private void decodeSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
-        if (layout.lzwDecodedHere() && decodeLzw(col, row, width, rows, dst)) {
+        if (layout.decodedHere() && decodeHere(col, row, width, rows, dst)) {
             return;
         }
         if (layout.predictorUndoneHere()) {
@@ -256,41 +256,50 @@ final class GeoTiffSource implements RasterSource {
     }
 
     /**
-     * Like {@link #decodeSubset} for LZW blocks, decompressed by {@link TiffLzw} from bytes read here and turned
-     * into samples by {@link PredictorUndo}.
+     * Like {@link #decodeSubset} for uncompressed and LZW blocks: read here with one positional read each, LZW
+     * decompressed by {@link TiffLzw}, turned into samples by {@link PredictorUndo}. TwelveMonkeys reads
+     * uncompressed samples through stream calls and LZW bytes one synchronized call at a time
+     * (docs/performance.md).
      *
      * @return false, with nothing decided, when a block is in the old, bit-reversed LZW (left to TwelveMonkeys)
      */
-    private boolean decodeLzw(int col, int row, int width, int rows, float[] dst) throws IOException {
+    private boolean decodeHere(int col, int row, int width, int rows, float[] dst) throws IOException {
+        boolean lzw = layout.compression() == 5;
         int bw = layout.blockWidth();
         int bh = layout.blockHeight();
         int bytes = layout.bytesPerSample();
         int segment = layout.tiled() ? bw : layout.width();
         for (int by = row / bh * bh; by < row + rows; by += bh) {
             int blockRows = layout.tiled() ? bh : Math.min(bh, layout.height() - by);
-            byte[] block = new byte[segment * blockRows * bytes];
+            int expected = segment * blockRows * bytes;
+            byte[] block = lzw ? new byte[expected] : null; // LZW's output; uncompressed data stay as read
             for (int bx = col / bw * bw; bx < col + width; bx += bw) {
                 int index = by / bh * layout.blocksAcross() + bx / bw;
-                byte[] compressed = readBlock(layout.offsets()[index], layout.byteCounts()[index]);
-                if (!TiffLzw.isNewStyle(compressed, compressed.length)) {
+                byte[] stored = readBlock(layout.offsets()[index], layout.byteCounts()[index]);
+                if (lzw && !TiffLzw.isNewStyle(stored, stored.length)) {
                     return false;
                 }
                 int got;
-                try {
-                    got = TiffLzw.decode(compressed, compressed.length, block);
-                } catch (IOException e) {
-                    throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
-                            + " (truncated or corrupt TIFF?): " + e.getMessage(), e);
+                if (lzw) {
+                    try {
+                        got = TiffLzw.decode(stored, stored.length, block);
+                    } catch (IOException e) {
+                        throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                                + " (truncated or corrupt TIFF?): " + e.getMessage(), e);
+                    }
+                } else {
+                    got = Math.min(stored.length, expected);
                 }
-                if (got < block.length) {
-                    throw new DemFormatException(file, "the LZW data of " + (layout.tiled() ? "tile " : "strip ")
-                            + index + " end after " + got + " of " + block.length + " bytes (truncated or corrupt"
+                byte[] samples = lzw ? block : stored;
+                if (got < expected) {
+                    throw new DemFormatException(file, "the data of " + (layout.tiled() ? "tile " : "strip ")
+                            + index + " end after " + got + " of " + expected + " bytes (truncated or corrupt"
                             + " TIFF?)");
                 }
                 int x0 = Math.max(bx, col);
                 int x1 = Math.min(Math.min(bx + bw, layout.width()), col + width);
                 for (int y = Math.max(by, row); y < Math.min(by + blockRows, row + rows); y++) {
-                    PredictorUndo.row(block, (y - by) * segment * bytes, segment, layout.predictor(),
+                    PredictorUndo.row(samples, (y - by) * segment * bytes, segment, layout.predictor(),
                             info.dataType(), layout.order(), x0 - bx, x1 - x0, dst, (y - row) * width + x0 - col);
                 }
             }

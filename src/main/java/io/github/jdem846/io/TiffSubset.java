@@ -59,17 +59,19 @@ final class TiffSubset {
         }
 
         /**
-         * Whether LZW blocks are decompressed here ({@link TiffLzw}) rather than by the decoder: LZW with
-         * predictor 1, 2 or 3 (as {@link #predictorUndoneHere}), one sample per pixel or band 1 of separate planes,
-         * samples of 8, 16, 32 or 64 bits.
+         * Whether the blocks are read and decoded here rather than by TwelveMonkeys: uncompressed or LZW
+         * ({@link TiffLzw}) blocks with predictor 1, 2 or 3 (as {@link #predictorUndoneHere}), one sample per pixel
+         * or band 1 of separate planes, samples of 8, 16, 32 or 64 bits.
          */
-        boolean lzwDecodedHere() {
+        boolean decodedHere() {
             boolean oneSample = samplesPerPixel == 1 || planar == 2;
             int bits = (int) bitsPerSample[0];
             int format = (int) sampleFormat[0];
             boolean plain = predictor == 1 && (format == 1 || format == 2 ? bits == 8 || bits == 16 || bits == 32
                     : format == 3 && (bits == 32 || bits == 64));
-            return compression == 5 && oneSample && (plain || predictorUndoneHere());
+            boolean predicted = (predictor == 2 && (format == 1 || format == 2) && (bits == 8 || bits == 16
+                    || bits == 32)) || (predictor == 3 && format == 3 && (bits == 32 || bits == 64));
+            return (compression == 1 || compression == 5) && oneSample && (plain || predicted);
         }
 
         /** Bytes of one sample of band 1. */
