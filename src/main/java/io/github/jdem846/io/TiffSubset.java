@@ -48,14 +48,8 @@ final class TiffSubset {
          * LZW or Deflate. TwelveMonkeys 3.15.0 undoes them through byte-by-byte streams, most of a Deflate read.
          */
         boolean predictorUndoneHere() {
-            boolean oneSample = samplesPerPixel == 1 || planar == 2;
             boolean compressed = compression == 5 || compression == 8 || compression == 32946;
-            int bits = (int) bitsPerSample[0];
-            int format = (int) sampleFormat[0];
-            boolean integers = predictor == 2 && (format == 1 || format == 2) && (bits == 8 || bits == 16
-                    || bits == 32);
-            boolean floats = predictor == 3 && format == 3 && (bits == 32 || bits == 64);
-            return oneSample && compressed && (integers || floats);
+            return oneSample() && compressed && predictor != 1 && samplesUndoable();
         }
 
         /**
@@ -64,14 +58,23 @@ final class TiffSubset {
          * or band 1 of separate planes, samples of 8, 16, 32 or 64 bits.
          */
         boolean decodedHere() {
-            boolean oneSample = samplesPerPixel == 1 || planar == 2;
+            return (compression == 1 || compression == 5) && oneSample() && samplesUndoable();
+        }
+
+        private boolean oneSample() {
+            return samplesPerPixel == 1 || planar == 2;
+        }
+
+        /**
+         * Whether {@link PredictorUndo} handles these samples and this predictor: none on 8/16/32-bit integers or
+         * 32/64-bit floats, 2 on those integers, 3 on those floats.
+         */
+        private boolean samplesUndoable() {
             int bits = (int) bitsPerSample[0];
             int format = (int) sampleFormat[0];
-            boolean plain = predictor == 1 && (format == 1 || format == 2 ? bits == 8 || bits == 16 || bits == 32
-                    : format == 3 && (bits == 32 || bits == 64));
-            boolean predicted = (predictor == 2 && (format == 1 || format == 2) && (bits == 8 || bits == 16
-                    || bits == 32)) || (predictor == 3 && format == 3 && (bits == 32 || bits == 64));
-            return (compression == 1 || compression == 5) && oneSample && (plain || predicted);
+            boolean integers = (format == 1 || format == 2) && (bits == 8 || bits == 16 || bits == 32);
+            boolean floats = format == 3 && (bits == 32 || bits == 64);
+            return predictor == 1 && (integers || floats) || predictor == 2 && integers || predictor == 3 && floats;
         }
 
         /** Bytes of one sample of band 1. */
