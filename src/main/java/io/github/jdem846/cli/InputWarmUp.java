@@ -1,6 +1,9 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemReader;
+import io.github.jdem846.io.ReadRequest;
+import io.github.jdem846.io.Window;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
@@ -10,9 +13,8 @@ import java.util.Optional;
 /**
  * Reads the input's header and first rows on a daemon thread while picocli parses the command line, so that the
  * reader's slow first steps overlap with it: the decoder's classes and first compilations and, only when the file
- * needs them, Apache SIS's (about
- * 0.3 s on first use: a {@code .prj}, a projected GeoTIFF other than a UTM zone of {@link
- * io.github.jdem846.geo.UtmZone}). A lat/lon or UTM GeoTIFF, an SRTM tile or a file without CRS never starts SIS,
+ * needs them, Apache SIS's (about 0.3 s on first use: a {@code .prj} or projected GeoTIFF of a CRS other than the
+ * common ones known without it). A lat/lon or UTM GeoTIFF, an SRTM tile or a file without CRS never starts SIS,
  * which would otherwise take a core from the command for nothing (docs/performance.md, "Start-up"). The input is
  * the first argument that names an existing DEM file; without one (the bundled sample, {@code --version}, a typo)
  * nothing is done. When the command will need latitude/longitude ({@link #needsLatLon}), the file's CRS is also
@@ -36,9 +38,9 @@ final class InputWarmUp {
 
     private static void run(String[] args) {
         try {
-            Optional<Path> dem = readFirstDem(args);
+            Optional<DemInfo> dem = firstDem(args);
             if (dem.isPresent() && needsLatLon(args)) {
-                DemReader.inspect(dem.get()).geometry().geoLocator();   // SIS's CRS and transform, as the command will
+                dem.get().geometry().geoLocator();   // SIS's CRS and transform, as the command will
             }
             if (dem.isPresent()) {
                 warmUpReader(dem.get());
@@ -54,12 +56,11 @@ final class InputWarmUp {
      * read, 0.46 s after twenty; docs/performance.md). At most an eighth of the file and {@link
      * #READ_WARM_UP_NANOS} of time, on the core picocli's start-up leaves idle.
      */
-    private static void warmUpReader(Path dem) throws IOException {
-        io.github.jdem846.io.DemInfo info = DemReader.inspect(dem);
+    private static void warmUpReader(DemInfo info) throws IOException {
+        Path dem = Path.of(info.source());
         int w = Math.min(info.width(), 512);
         int h = (int) Math.max(1, Math.min(256, (long) info.width() * info.height() / 8 / w));
-        io.github.jdem846.io.ReadRequest firstRows = io.github.jdem846.io.ReadRequest.of(
-                io.github.jdem846.io.Window.cells(0, 0, w, Math.min(h, info.height())));
+        ReadRequest firstRows = ReadRequest.of(Window.cells(0, 0, w, Math.min(h, info.height())));
         long start = System.nanoTime();
         do {
             DemReader.read(dem, firstRows);
@@ -90,13 +91,17 @@ final class InputWarmUp {
      * @return that file, or empty when no argument names one
      */
     static Optional<Path> readFirstDem(String[] args) {
+        return firstDem(args).map(info -> Path.of(info.source()));
+    }
+
+    /** The header of the first argument that names an existing DEM file (read once, used for all the warm-up). */
+    private static Optional<DemInfo> firstDem(String[] args) {
         for (String arg : args) {
             if (arg.startsWith("-") || !isFile(arg)) {
                 continue;
             }
             try {
-                DemReader.inspect(Path.of(arg));
-                return Optional.of(Path.of(arg));
+                return Optional.of(DemReader.inspect(Path.of(arg)));
             } catch (IOException | RuntimeException e) {
                 // not a DEM: try the next argument
             }

@@ -66,9 +66,9 @@ public final class CrsResolver {
     }
 
     /**
-     * Parses an OGC or ESRI WKT 1/2 string (e.g. the content of an ESRI {@code .prj}). Geographic WGS 84 and NAD83
-     * and their UTM zones are recognised without Apache SIS and known by their EPSG code (SIS's definition follows
-     * from {@link #complete} where needed); everything else is parsed by SIS.
+     * Parses an OGC or ESRI WKT 1/2 string (e.g. the content of an ESRI {@code .prj}). Geographic WGS 84, NAD83 and
+     * ETRS89 and their UTM zones are recognised without Apache SIS and known by their EPSG code (SIS's definition
+     * follows from {@link #complete} where needed); everything else is parsed by SIS.
      *
      * @throws IllegalArgumentException when the text is not a CRS Apache SIS can parse; the message says why
      */
