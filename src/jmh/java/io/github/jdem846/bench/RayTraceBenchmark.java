@@ -1,7 +1,11 @@
 package io.github.jdem846.bench;
 
 import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.raster.PixelAnchor;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowMask;
 import io.github.jdem846.shadow.ShadowOptions;
@@ -27,7 +31,8 @@ import org.openjdk.jmh.annotations.Warmup;
  * score is milliseconds per whole grid, so score / cells is the cost of one ray ({@code march}, {@code exact}) or of
  * one cell ({@code sweep}). {@code exact} runs at 512² only. The DEM ({@code dem} parameter) is the seeded fractal
  * ({@link FractalDem}, seed 846, 30 m cells; the default) or {@code mirrored}: Big Tujunga SRTM 30 m mirror-tiled
- * ({@link MirroredDem}; real mountains, read from testdata, so run from the worktree root).
+ * ({@link MirroredDem}; real mountains, read from testdata, so run from the worktree root), or {@code mirrored-latlon}: the
+ * same on a 1″ lat/lon grid ({@link #onLatLonGrid}), where the step length changes from row to row.
  *
  * <pre>./mvnw -B -o -q -Pjmh package -DskipTests
  * java -jar target/benchmarks.jar RayTraceBenchmark -f 1 -wi 2 -i 3
@@ -48,8 +53,21 @@ public class RayTraceBenchmark {
         return switch (name) {
             case "fractal" -> FractalDem.dem(size, 846L);
             case "mirrored" -> MirroredDem.bigTujunga(size);
-            default -> throw new IllegalArgumentException("dem must be fractal or mirrored, not '" + name + "'");
+            case "mirrored-latlon" -> onLatLonGrid(MirroredDem.bigTujunga(size));
+            default -> throw new IllegalArgumentException("dem must be fractal, mirrored or mirrored-latlon, not '"
+                    + name + "'");
         };
+    }
+
+    /**
+     * The same elevations on a 1″ WGS 84 grid whose north edge is at 35° N (as SRTM 1″ or Copernicus GLO-30 tiles):
+     * a step length per row, the sweep's lat/lon path.
+     */
+    static Dem onLatLonGrid(Dem dem) {
+        double arcSecond = 1.0 / 3600;
+        GridGeometry g = new GridGeometry(dem.width(), dem.height(), -118.5, 35.0, arcSecond, arcSecond,
+                CrsInfo.geographic("WGS 84", 4326, Ellipsoid.WGS84), PixelAnchor.CORNER);
+        return new Dem(dem.backingArray(), g);
     }
 
     /** A DEM, the sun and a one-thread pool; the grid's size is the subclass's. */

@@ -242,6 +242,8 @@ final class SunSweep {
         int kMax = wj1 - pf[wi0];
         Window w = new Window(win, wi0, wi1, wj0, wj1, iTop, out);
         boolean lockstep = lockstepAllowed && bilinear && f.curvature == 0 && uniformStep == uniformStep;
+        boolean varying = lockstepAllowed && bilinear && f.curvature == 0 && uniformStep != uniformStep
+                && !thinFeatures;
         List<RecursiveAction> tasks = new ArrayList<>();
         for (int k = kMin; k <= kMax; k += LINES_PER_TASK) {
             int from = k;
@@ -251,6 +253,8 @@ final class SunSweep {
                 protected void compute() {
                     if (lockstep) {
                         bandsUniformHard(w, from, to);
+                    } else if (varying) {
+                        bandsVaryingHard(w, from, to);
                     } else {
                         bands(w, from, to);
                     }
@@ -763,6 +767,127 @@ final class SunSweep {
         }
     }
 
+    /**
+     * {@link #bandsUniformHard} for a grid whose step length changes from row to row (lat/lon grids): the lines
+     * kFrom … kTo + 1 are walked in lockstep with the arithmetic of {@link #walkLine} for such grids, a running
+     * maximum of z + tan·P over each line's samples from two steps upstream on (P = the distance from the line's top,
+     * summed step by step in the same order), and the cells between them evaluated with their own row's step and
+     * floor, so the mask is bit-identical to the line-by-line path. Hard shadows without curvature or thin features.
+     */
+    private void bandsVaryingHard(Window w, int kFrom, int kTo) {
+        int lines = kTo - kFrom + 2;
+        double tan = f.tanElevation;
+        double[] steps = f.metresPerStep;
+        double tFirst = (double) firstSample() / SUB_STEPS;
+        int iStart = w.iTop;
+        int iEnd = w.wi0;
+        if (m > 0) {
+            iStart = (int) Math.min(iStart, Math.floor((nMin - kFrom) / m) + 1);
+            iEnd = (int) Math.max(iEnd, Math.ceil((w.wj0 - kTo - 2) / m) - 1);
+        } else if (kTo + 1 < -1 || kFrom > nMin - 1) {
+            return;
+        }
+        if (iStart < iEnd) {
+            return;
+        }
+        double[] best = new double[lines];       // max of z + tan·P over the samples two or more steps upstream
+        double[] twoUp = new double[lines];      // z + tan·P of the sample two steps upstream: joins now
+        double[] oneUp = new double[lines];      // and of the sample one step upstream
+        double[] pos = new double[lines];        // P at the current major index
+        double[] h = new double[lines];
+        double[] z = new double[lines];
+        int[] top = new int[lines];              // the line's top on the whole grid, where P = 0
+        java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
+        java.util.Arrays.fill(twoUp, Double.NEGATIVE_INFINITY);
+        java.util.Arrays.fill(oneUp, Double.NEGATIVE_INFINITY);
+        boolean edgeHalf = iStart == nMaj - 1 && upstreamEdgeSample;
+        for (int q = 0; q < lines; q++) {
+            int k = kFrom + q;
+            top[q] = m > 0 ? (int) Math.min(nMaj - 1, Math.floor((nMin - k) / m) + 1) : nMaj - 1;
+            double p = 0;
+            for (int i = top[q] - 1; i > iStart; i--) {           // a window's halo cuts the line below its top
+                p += steps[rowOf(i, lineRow(k, i))];
+            }
+            pos[q] = p;
+            if (edgeHalf && top[q] == nMaj - 1) {
+                // the file's upstream outer edge, half a step beyond the line's top: joins as a sample at i + 2
+                double ze = edgeSample(k);
+                oneUp[q] = ze == ze ? ze + tan * (0.0 - 0.5 * steps[rowOf(nMaj - 1, lineRow(k, nMaj - 1))])
+                        : Double.NEGATIVE_INFINITY;
+            }
+        }
+        float[] out = w.out;
+        CellWindow win = w.win;
+        int outStrideJ = rj * win.width() + cj;
+        int sj = strideJ;
+        for (int i = iStart; i >= iEnd; i--) {
+            int pfi = pf[i];
+            double fr = pr[i];
+            int qa = Math.max(0, -kFrom - pfi);
+            int qb = Math.min(lines - 1, cellHi - 1 - kFrom - pfi);
+            for (int q = 0; q < lines; q++) {
+                z[q] = q >= qa && q <= qb ? Double.NaN : lineSample(kFrom + q, i);
+            }
+            if (qa <= qb) {
+                int at = baseI[i] + sj * (kFrom + qa + pfi);
+                for (int q = qa; q <= qb; q++, at += sj) {
+                    double za = v[at];
+                    if (fr == 0) {
+                        z[q] = za;
+                    } else {
+                        double zb = v[at + sj];
+                        z[q] = za == za && zb == zb ? za + (zb - za) * fr : za == za ? za : zb;
+                    }
+                }
+            }
+            int near = kFrom + pfi + (fr >= 0.5 ? 1 : 0);    // lineRow(kFrom + q, i) = clamp(near + q)
+            double rowStep = f.xMajor ? Double.NaN : steps[r0 + ri * i];   // the step of every line when y-major
+            for (int q = 0; q < lines; q++) {
+                if (i < top[q]) {
+                    pos[q] += f.xMajor ? steps[r0 + rj * Math.max(0, Math.min(nMin - 1, near + q))] : rowStep;
+                }
+                double p = pos[q];
+                double b = best[q];
+                double joining = twoUp[q];
+                if (joining > b) {
+                    b = joining;
+                }
+                best[q] = b;
+                h[q] = b - tan * p;
+                twoUp[q] = oneUp[q];
+                double zq = z[q];
+                oneUp[q] = i <= top[q] && zq == zq ? zq + tan * p : Double.NEGATIVE_INFINITY;
+            }
+            if (i > w.wi1) {
+                continue;
+            }
+            int c = fr > 0 ? 1 : 0;
+            double phi = fr > 0 ? 1 - fr : 0;
+            int off = kFrom + pfi + c;
+            int q0 = Math.max(0, w.wj0 - off);
+            int q1 = Math.min(lines - 2, w.wj1 - off);
+            if (q0 > q1) {
+                continue;
+            }
+            int outBase = (r0 + ri * i - win.row()) * win.width() + (c0 + ci * i - win.col());
+            boolean inner = i + 1 < nMaj;
+            int up = inner ? baseI[i + 1] : 0;
+            int base = baseI[i];
+            for (int q = q0; q <= q1; q++) {
+                int j = off + q;
+                int cell = base + sj * j;
+                double z0 = v[cell];
+                float result = 0f;
+                if (z0 == z0) {
+                    int row = rowOf(i, j);
+                    boolean shadow = j >= jTraced ? rayBlockedToEdge(i, j, z0)
+                            : between(h[q], h[q + 1], phi, floorOfRow[row]) > z0;
+                    result = shadow || firstStepBlocked(i, j, cell, z0, inner, up, steps[row] * tan, tFirst) ? 1f : 0f;
+                }
+                out[outBase + outStrideJ * j] = result;
+            }
+        }
+    }
     /**
      * The terrain a cell's own ray meets at major index {@code iStar}, on the line position k + φ (φ = the cell's
      * fraction between lines k and k + 1, its offset across the sun direction, the same at every major index),
