@@ -790,32 +790,25 @@ final class SunSweep {
         if (iStart < iEnd) {
             return;
         }
-        double[] best = new double[lines];       // max of z + tan·P over the samples two or more steps upstream
-        double[] twoUp = new double[lines];      // z + tan·P of the sample two steps upstream: joins now
-        double[] oneUp = new double[lines];      // and of the sample one step upstream
-        double[] pos = new double[lines];        // P at the current major index
-        double[] h = new double[lines];
-        double[] z = new double[lines];
-        int[] top = new int[lines];              // the line's top on the whole grid, where P = 0
-        java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
-        java.util.Arrays.fill(twoUp, Double.NEGATIVE_INFINITY);
-        java.util.Arrays.fill(oneUp, Double.NEGATIVE_INFINITY);
+        VaryingWalk walk = new VaryingWalk(lines, tan);
         boolean edgeHalf = iStart == nMaj - 1 && upstreamEdgeSample;
         for (int q = 0; q < lines; q++) {
             int k = kFrom + q;
-            top[q] = m > 0 ? (int) Math.min(nMaj - 1, Math.floor((nMin - k) / m) + 1) : nMaj - 1;
+            int top = m > 0 ? (int) Math.min(nMaj - 1, Math.floor((nMin - k) / m) + 1) : nMaj - 1;
             double p = 0;
-            for (int i = top[q] - 1; i > iStart; i--) {           // a window's halo cuts the line below its top
+            for (int i = top - 1; i > iStart; i--) {           // a window's halo cuts the line below its top
                 p += steps[rowOf(i, lineRow(k, i))];
             }
-            pos[q] = p;
-            if (edgeHalf && top[q] == nMaj - 1) {
+            walk.top[q] = top;
+            walk.pos[q] = p;
+            if (edgeHalf && top == nMaj - 1) {
                 // the file's upstream outer edge, half a step beyond the line's top: joins as a sample at i + 2
                 double ze = edgeSample(k);
-                oneUp[q] = ze == ze ? ze + tan * (0.0 - 0.5 * steps[rowOf(nMaj - 1, lineRow(k, nMaj - 1))])
+                walk.oneUp[q] = ze == ze ? ze + tan * (0.0 - 0.5 * steps[rowOf(nMaj - 1, lineRow(k, nMaj - 1))])
                         : Double.NEGATIVE_INFINITY;
             }
         }
+        double[] h = walk.h;
         float[] out = w.out;
         CellWindow win = w.win;
         int outStrideJ = rj * win.width() + cj;
@@ -825,38 +818,29 @@ final class SunSweep {
             double fr = pr[i];
             int qa = Math.max(0, -kFrom - pfi);
             int qb = Math.min(lines - 1, cellHi - 1 - kFrom - pfi);
-            for (int q = 0; q < lines; q++) {
-                z[q] = q >= qa && q <= qb ? Double.NaN : lineSample(kFrom + q, i);
+            int near = kFrom + pfi + (fr >= 0.5 ? 1 : 0);    // lineRow(kFrom + q, i) = clamp(near + q)
+            boolean xMajor = f.xMajor;
+            double rowStep = xMajor ? Double.NaN : steps[r0 + ri * i];   // the step of every line when y-major
+            int before = Math.min(qa, lines);
+            for (int q = 0; q < before; q++) {
+                double st = xMajor ? steps[r0 + rj * Math.max(0, Math.min(nMin - 1, near + q))] : rowStep;
+                walk.advance(q, i, lineSample(kFrom + q, i), st);
             }
             if (qa <= qb) {
+                // the lines whose two minor cells are on the grid: read straight from the array
                 int at = baseI[i] + sj * (kFrom + qa + pfi);
-                for (int q = qa; q <= qb; q++, at += sj) {
-                    double za = v[at];
-                    if (fr == 0) {
-                        z[q] = za;
-                    } else {
-                        double zb = v[at + sj];
-                        z[q] = za == za && zb == zb ? za + (zb - za) * fr : za == za ? za : zb;
-                    }
+                double za = v[at];
+                for (int q = qa; q <= qb; q++) {
+                    at += sj;
+                    double zb = v[at];
+                    double zq = fr == 0 ? za : za == za && zb == zb ? za + (zb - za) * fr : za == za ? za : zb;
+                    walk.advance(q, i, zq, xMajor ? steps[r0 + rj * (near + q)] : rowStep);
+                    za = zb;
                 }
             }
-            int near = kFrom + pfi + (fr >= 0.5 ? 1 : 0);    // lineRow(kFrom + q, i) = clamp(near + q)
-            double rowStep = f.xMajor ? Double.NaN : steps[r0 + ri * i];   // the step of every line when y-major
-            for (int q = 0; q < lines; q++) {
-                if (i < top[q]) {
-                    pos[q] += f.xMajor ? steps[r0 + rj * Math.max(0, Math.min(nMin - 1, near + q))] : rowStep;
-                }
-                double p = pos[q];
-                double b = best[q];
-                double joining = twoUp[q];
-                if (joining > b) {
-                    b = joining;
-                }
-                best[q] = b;
-                h[q] = b - tan * p;
-                twoUp[q] = oneUp[q];
-                double zq = z[q];
-                oneUp[q] = i <= top[q] && zq == zq ? zq + tan * p : Double.NEGATIVE_INFINITY;
+            for (int q = Math.max(qb + 1, before); q < lines; q++) {
+                double st = xMajor ? steps[r0 + rj * Math.max(0, Math.min(nMin - 1, near + q))] : rowStep;
+                walk.advance(q, i, lineSample(kFrom + q, i), st);
             }
             if (i > w.wi1) {
                 continue;
@@ -888,6 +872,54 @@ final class SunSweep {
             }
         }
     }
+    /**
+     * The lines of {@link #bandsVaryingHard}: per line, the running maximum of z + tan·P over its samples from two
+     * steps upstream on, the two samples still to join, P at the current major index and the line's top (P = 0).
+     */
+    private static final class VaryingWalk {
+        final double[] best;
+        final double[] twoUp;
+        final double[] oneUp;
+        final double[] pos;
+        final double[] h;
+        final int[] top;
+        final double tan;
+
+        VaryingWalk(int lines, double tan) {
+            best = new double[lines];
+            twoUp = new double[lines];
+            oneUp = new double[lines];
+            pos = new double[lines];
+            h = new double[lines];
+            top = new int[lines];
+            this.tan = tan;
+            java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
+            java.util.Arrays.fill(twoUp, Double.NEGATIVE_INFINITY);
+            java.util.Arrays.fill(oneUp, Double.NEGATIVE_INFINITY);
+        }
+
+        /**
+         * Line q at major index i, whose sample there is z (NaN = none) and whose step from i + 1 is {@code step}:
+         * its shadow height h[q] = max(z + tan·P over samples two or more steps upstream) − tan·P(i).
+         */
+        void advance(int q, int i, double z, double step) {
+            int t = top[q];
+            if (i < t) {
+                pos[q] += step;
+            }
+            double p = pos[q];
+            double b = best[q];
+            double joining = twoUp[q];
+            if (joining > b) {
+                b = joining;
+            }
+            best[q] = b;
+            h[q] = b - tan * p;
+            twoUp[q] = oneUp[q];
+            oneUp[q] = i <= t && z == z ? z + tan * p : Double.NEGATIVE_INFINITY;
+        }
+    }
+
     /**
      * The terrain a cell's own ray meets at major index {@code iStar}, on the line position k + φ (φ = the cell's
      * fraction between lines k and k + 1, its offset across the sun direction, the same at every major index),
