@@ -61,7 +61,7 @@ public final class HillshadeCommand implements Callable<Integer> {
         HillshadeMethod m = multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : HillshadeMethod.fromName(method);
         HillshadeOptions options = shading.options();
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).hillshadeGray(dem, m,
-                options, LightField.uniform(new LightDirection(315, 45)), RenderProgress.NONE));
+                options, LightField.uniform(new LightDirection(315, 45)), RenderProgress.NONE), input.file());
         DemLoader.Loaded loaded = input.load(DemLoader.Halo.uniform(1), false);
         warmUp.stop();
         times.lap("read");

@@ -1,14 +1,20 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.io.DemReader;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.raster.PixelAnchor;
+import java.io.IOException;
+import java.nio.file.Path;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
  * Runs a command's own stage on a small synthetic DEM on a daemon thread while the command reads its file, so that
  * the JIT has compiled the per-cell loops before the real grid arrives (in a one-shot command the kernels otherwise
- * start interpreted on the full grid: docs/performance.md, "Whole commands vs gdaldem"). The warm-up stops at
- * {@link #stop()} or after its budget, whichever comes first; any failure is ignored.
+ * start interpreted on the full grid: docs/performance.md, "Whole commands vs gdaldem"). The synthetic grid is of
+ * the input's kind, lat/lon or projected, since some stages take another loop on each (the sweep's step length per
+ * row). The warm-up stops at {@link #stop()} or after its budget, whichever comes first; any failure is ignored.
  */
 final class KernelWarmUp {
 
@@ -25,14 +31,17 @@ final class KernelWarmUp {
     private final AtomicBoolean stopped = new AtomicBoolean();
     private final Thread thread;
 
-    private KernelWarmUp(Stage stage) {
-        thread = new Thread(() -> run(stage), "jdem846-kernel-warm-up");
+    private KernelWarmUp(Stage stage, Path input) {
+        thread = new Thread(() -> run(stage, input), "jdem846-kernel-warm-up");
         thread.setDaemon(true);
     }
 
-    /** Starts warming {@code stage} up and returns at once. */
-    static KernelWarmUp start(Stage stage) {
-        KernelWarmUp warmUp = new KernelWarmUp(stage);
+    /**
+     * Starts warming {@code stage} up on a grid of {@code input}'s kind (null = the bundled sample, projected) and
+     * returns at once.
+     */
+    static KernelWarmUp start(Stage stage, Path input) {
+        KernelWarmUp warmUp = new KernelWarmUp(stage, input);
         warmUp.thread.start();
         return warmUp;
     }
@@ -42,8 +51,8 @@ final class KernelWarmUp {
         stopped.set(true);
     }
 
-    private void run(Stage stage) {
-        Dem dem = syntheticHills();
+    private void run(Stage stage, Path input) {
+        Dem dem = syntheticHills(geometryLike(input));
         long start = System.nanoTime();
         try {
             for (int round = 0; round < MAX_ROUNDS && !stopped.get()
@@ -55,8 +64,29 @@ final class KernelWarmUp {
         }
     }
 
-    /** Rolling hills on 30 m cells, so that every branch of a kernel that real relief takes is taken. */
-    private static Dem syntheticHills() {
+    /**
+     * A {@link #SIZE}² grid of about 30 m cells like {@code input}'s: 1″ cells at its latitude when its CRS is
+     * geographic, else metric (also when the header cannot be read: the command reports that itself).
+     */
+    static GridGeometry geometryLike(Path input) {
+        if (input != null) {
+            try {
+                GridGeometry g = DemReader.inspect(input).geometry();
+                CrsInfo crs = g.crs();
+                if (crs != null && crs.isGeographic()) {
+                    double arcSecond = 1.0 / 3600;
+                    double latitude = Math.max(-80, Math.min(80, g.originY() - g.height() / 2.0 * g.cellHeight()));
+                    return new GridGeometry(SIZE, SIZE, 0, latitude, arcSecond, arcSecond, crs, PixelAnchor.CORNER);
+                }
+            } catch (IOException | RuntimeException e) {
+                // the command reads the header again and reports what is wrong
+            }
+        }
+        return GridGeometry.metric(SIZE, SIZE, 30);
+    }
+
+    /** Rolling hills, so that every branch of a kernel that real relief takes is taken. */
+    private static Dem syntheticHills(GridGeometry geometry) {
         float[] v = new float[SIZE * SIZE];
         for (int r = 0; r < SIZE; r++) {
             for (int c = 0; c < SIZE; c++) {
@@ -64,6 +94,6 @@ final class KernelWarmUp {
                         + 40 * Math.sin((c + r) * 0.23));
             }
         }
-        return new Dem(v, GridGeometry.metric(SIZE, SIZE, 30));
+        return new Dem(v, geometry);
     }
 }

@@ -85,7 +85,7 @@ public final class RenderCommand implements Callable<Integer> {
         }
         Scene warmUpScene = scene.withLight(new LightDirection(320, 25));
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem,
-                warmUpScene));
+                warmUpScene), input.file());
         DemLoader.Loaded loaded = input.load(halo, scene.tint() != null || scene.hasShadows() && input.hasWindow());
         warmUp.stop();
         if (scene.hasShadows()) {

@@ -54,6 +54,7 @@ public final class ShadowsCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
+        PhaseTimes times = new PhaseTimes();
         ShadowAlgorithm alg = ShadowAlgorithm.parse(algorithm);
         if (alg == ShadowAlgorithm.NONE) {
             throw new IllegalArgumentException("--algorithm none makes no mask; choose sweep, march or exact");
@@ -63,10 +64,11 @@ public final class ShadowsCommand implements Callable<Integer> {
                 .withShadowOptions(shadowOptions.options());
         Scene warmUpScene = scene.withLight(new LightDirection(300, 10));
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).shadows(dem,
-                warmUpScene, RenderProgress.NONE));
+                warmUpScene, RenderProgress.NONE), input.file());
         DemLoader.Loaded loaded = input.load(
                 CommandSupport.shadowHalo(sun, input.body(), 1, scene.shadowOptions(), err), input.hasWindow());
         warmUp.stop();
+        times.lap("read");
         scene = scene.withShadowOptions(CommandSupport.forLoadedGrid(scene.shadowOptions(), loaded));
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
@@ -75,12 +77,14 @@ public final class ShadowsCommand implements Callable<Integer> {
             mask = new Renderer(execution.settings()).shadows(loaded.dem(), scene.withLight(lighting.field()),
                     loaded.area(), progress);
         }
-        float[] window = mask;
-        byte[] bytes = new byte[window.length];
-        for (int i = 0; i < window.length; i++) {
-            bytes[i] = (byte) Math.round(Clamp.between(window[i], 0f, 1f) * 255f);
+        times.lap("shadows");
+        byte[] bytes = new byte[mask.length];
+        for (int i = 0; i < mask.length; i++) {
+            bytes[i] = (byte) Math.round(Clamp.between(mask[i], 0f, 1f) * 255f);
         }
         output.writeGray(bytes, CommandSupport.outputGeometry(loaded), null, err);
+        times.lap("write");
+        times.print(verbose.isVerbose(), err);
         return 0;
     }
 }
