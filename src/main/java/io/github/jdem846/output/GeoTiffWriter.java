@@ -1,6 +1,7 @@
 package io.github.jdem846.output;
 
 import io.github.jdem846.geo.GeoKeys;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -13,6 +14,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.stream.IntStream;
 import java.util.zip.Deflater;
 
 /**
@@ -47,9 +49,11 @@ final class GeoTiffWriter {
      * Writes {@code pixels} to {@code file} (created or truncated).
      *
      * @param geo    the georeferencing, or {@code null} for a plain TIFF
-     * @param noData the GDAL_NODATA value, or {@code null} for none
+     * @param noData   the GDAL_NODATA value, or {@code null} for none
+     * @param parallel compress the strips on all processors (the file is the same byte for byte)
      */
-    static void write(Pixels pixels, Path file, GeoReference geo, Double noData) throws IOException {
+    static void write(Pixels pixels, Path file, GeoReference geo, Double noData, boolean parallel)
+            throws IOException {
         try (FileChannel ch = FileChannel.open(file, StandardOpenOption.WRITE, StandardOpenOption.CREATE,
                 StandardOpenOption.TRUNCATE_EXISTING)) {
             ch.position(8);
@@ -59,7 +63,7 @@ final class GeoTiffWriter {
             long[] offsets = new long[strips];
             long[] counts = new long[strips];
             boolean predictor = pixels.bitsPerSample() == 8;
-            writeStrips(ch, pixels, rowsPerStrip, predictor, offsets, counts);
+            writeStrips(ch, pixels, rowsPerStrip, predictor, offsets, counts, parallel);
 
             Map<Integer, Field> fields = fields(pixels, geo, noData, rowsPerStrip, predictor, offsets, counts);
             long ifdOffset = align(ch.position());
@@ -75,45 +79,63 @@ final class GeoTiffWriter {
         }
     }
 
+    /** Strips compressed at once, per processor: a bound on the compressed data held before it is written. */
+    private static final int STRIPS_PER_BATCH_AND_PROCESSOR = 8;
+
     private static void writeStrips(FileChannel ch, Pixels pixels, int rowsPerStrip, boolean predictor,
-                                    long[] offsets, long[] counts) throws IOException {
+                                    long[] offsets, long[] counts, boolean parallel) throws IOException {
+        int batch = parallel ? STRIPS_PER_BATCH_AND_PROCESSOR * Runtime.getRuntime().availableProcessors() : 1;
+        for (int s0 = 0; s0 < offsets.length; s0 += batch) {
+            int first = s0;
+            int end = Math.min(offsets.length, s0 + batch);
+            byte[][] compressed = new byte[end - first][];
+            IntStream strips = IntStream.range(first, end);
+            (parallel ? strips.parallel() : strips).forEach(s ->
+                    compressed[s - first] = compressStrip(pixels, s, rowsPerStrip, predictor));
+            for (int s = first; s < end; s++) {
+                offsets[s] = ch.position();
+                ByteBuffer data = ByteBuffer.wrap(compressed[s - first]);
+                while (data.hasRemaining()) {
+                    ch.write(data);
+                }
+                counts[s] = compressed[s - first].length;
+            }
+        }
+    }
+
+    /** Strip {@code s}: its rows, with the horizontal predictor when asked, as one zlib (Deflate) stream. */
+    private static byte[] compressStrip(Pixels pixels, int s, int rowsPerStrip, boolean predictor) {
         int rowBytes = pixels.rowBytes();
         int spp = pixels.samplesPerPixel();
-        byte[] raw = new byte[rowBytes * rowsPerStrip];
+        int y0 = s * rowsPerStrip;
+        int rows = Math.min(rowsPerStrip, pixels.height() - y0);
+        byte[] raw = new byte[rowBytes * rows];
         byte[] row = new byte[rowBytes];
-        byte[] out = new byte[1 << 16];
+        for (int r = 0; r < rows; r++) {
+            pixels.row(y0 + r, row);
+            int base = r * rowBytes;
+            if (predictor) {
+                // TIFF 6.0 section 14: each sample minus the same sample of the pixel to its left, mod 256.
+                for (int i = 0; i < spp && i < rowBytes; i++) {
+                    raw[base + i] = row[i];
+                }
+                for (int i = spp; i < rowBytes; i++) {
+                    raw[base + i] = (byte) (row[i] - row[i - spp]);
+                }
+            } else {
+                System.arraycopy(row, 0, raw, base, rowBytes);
+            }
+        }
         Deflater deflater = new Deflater(Deflater.DEFAULT_COMPRESSION);
         try {
-            for (int s = 0; s < offsets.length; s++) {
-                int y0 = s * rowsPerStrip;
-                int rows = Math.min(rowsPerStrip, pixels.height() - y0);
-                for (int r = 0; r < rows; r++) {
-                    pixels.row(y0 + r, row);
-                    int base = r * rowBytes;
-                    if (predictor) {
-                        // TIFF 6.0 section 14: each sample minus the same sample of the pixel to its left, mod 256.
-                        for (int i = 0; i < spp && i < rowBytes; i++) {
-                            raw[base + i] = row[i];
-                        }
-                        for (int i = spp; i < rowBytes; i++) {
-                            raw[base + i] = (byte) (row[i] - row[i - spp]);
-                        }
-                    } else {
-                        System.arraycopy(row, 0, raw, base, rowBytes);
-                    }
-                }
-                offsets[s] = ch.position();
-                deflater.reset();
-                deflater.setInput(raw, 0, rows * rowBytes);
-                deflater.finish();
-                long written = 0;
-                while (!deflater.finished()) {
-                    int n = deflater.deflate(out);
-                    ch.write(ByteBuffer.wrap(out, 0, n));
-                    written += n;
-                }
-                counts[s] = written;
+            deflater.setInput(raw);
+            deflater.finish();
+            ByteArrayOutputStream out = new ByteArrayOutputStream(raw.length / 4 + 64);
+            byte[] buffer = new byte[1 << 16];
+            while (!deflater.finished()) {
+                out.write(buffer, 0, deflater.deflate(buffer));
             }
+            return out.toByteArray();
         } finally {
             deflater.end();
         }

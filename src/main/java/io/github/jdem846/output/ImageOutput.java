@@ -190,8 +190,9 @@ public final class ImageOutput {
     private static void encode(ImageFormat format, Pixels image, Path temp, GeoReference geo, Double noData,
                                WriteOptions options) throws IOException {
         switch (format) {
-            case PNG -> PngWriter.write(image.image(), temp, options.pngCompressionLevel(), options.parallelPng());
-            case GEOTIFF -> GeoTiffWriter.write(image, temp, geo, noData);
+            case PNG -> PngWriter.write(image.image(), temp, options.pngCompressionLevel(),
+                    options.parallelCompression());
+            case GEOTIFF -> GeoTiffWriter.write(image, temp, geo, noData, options.parallelCompression());
         }
     }
 

@@ -13,10 +13,11 @@ import java.util.Objects;
  *                            PNG has no no-data marker: RGBA no-data pixels are transparent (alpha 0)
  * @param pngCompressionLevel deflate level 0 (none) to 9 (smallest) for PNG; the default 1 is the fastest level
  *                            and within 10 % of the smallest file (see docs/performance.md)
- * @param parallelPng         compress PNG data on all processors (PngEncoder's shared daemon thread pool)
+ * @param parallelCompression compress on all processors: PNG data in PngEncoder's shared daemon thread pool, GeoTIFF
+ *                            strips in the common ForkJoinPool (the file is the same either way)
  */
 public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, Double noData,
-                           int pngCompressionLevel, boolean parallelPng) {
+                           int pngCompressionLevel, boolean parallelCompression) {
 
     /** When to write georeferencing sidecar files (world file, .prj, .aux.xml). */
     public enum Sidecars {
@@ -50,28 +51,29 @@ public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, D
     }
 
     public WriteOptions withSidecars(Sidecars value) {
-        return new WriteOptions(value, worldFileNaming, noData, pngCompressionLevel, parallelPng);
+        return new WriteOptions(value, worldFileNaming, noData, pngCompressionLevel, parallelCompression);
     }
 
     public WriteOptions withWorldFileNaming(WorldFileNaming value) {
-        return new WriteOptions(sidecars, value, noData, pngCompressionLevel, parallelPng);
+        return new WriteOptions(sidecars, value, noData, pngCompressionLevel, parallelCompression);
     }
 
     /** A copy with the given GeoTIFF no-data value. */
     public WriteOptions withNoData(double value) {
-        return new WriteOptions(sidecars, worldFileNaming, value, pngCompressionLevel, parallelPng);
+        return new WriteOptions(sidecars, worldFileNaming, value, pngCompressionLevel, parallelCompression);
     }
 
     /** A copy without a GeoTIFF no-data value. */
     public WriteOptions withoutNoData() {
-        return new WriteOptions(sidecars, worldFileNaming, null, pngCompressionLevel, parallelPng);
+        return new WriteOptions(sidecars, worldFileNaming, null, pngCompressionLevel, parallelCompression);
     }
 
     public WriteOptions withPngCompressionLevel(int value) {
-        return new WriteOptions(sidecars, worldFileNaming, noData, value, parallelPng);
+        return new WriteOptions(sidecars, worldFileNaming, noData, value, parallelCompression);
     }
 
-    public WriteOptions withParallelPng(boolean value) {
+    /** A copy that compresses on all processors, or on the calling thread only. */
+    public WriteOptions withParallelCompression(boolean value) {
         return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, value);
     }
 }

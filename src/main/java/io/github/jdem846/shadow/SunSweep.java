@@ -686,7 +686,7 @@ final class SunSweep {
             if (qa <= qb) {
                 int at = base + sj * (kFrom + qa + pfi);
                 if (fr == 0) {
-                    for (int q = qa; q <= qb; q++, at += sj) {
+                    for (int q = qa, qEnd = qb + 1; q < qEnd; q++, at += sj) {
                         double b = best[q];
                         double p = prev[q];
                         double z = v[at];
@@ -696,7 +696,7 @@ final class SunSweep {
                     }
                 } else {
                     double za = v[at];
-                    for (int q = qa; q <= qb; q++) {
+                    for (int q = qa, qEnd = qb + 1; q < qEnd; q++) {
                         at += sj;
                         double zb = v[at];
                         double z;
@@ -752,7 +752,7 @@ final class SunSweep {
                 }
                 out[outBase + outStrideJ * j] = result;
             }
-            for (int q = qEdge; q <= q1; q++) {
+            for (int q = qEdge, qEnd = q1 + 1; q < qEnd; q++) {
                 int j = off + q;
                 int cell = base + sj * j;
                 double z0 = v[cell];
@@ -830,7 +830,7 @@ final class SunSweep {
                 // the lines whose two minor cells are on the grid: read straight from the array
                 int at = baseI[i] + sj * (kFrom + qa + pfi);
                 double za = v[at];
-                for (int q = qa; q <= qb; q++) {
+                for (int q = qa, qEnd = qb + 1; q < qEnd; q++) {
                     at += sj;
                     double zb = v[at];
                     double zq = fr == 0 ? za : za == za && zb == zb ? za + (zb - za) * fr : za == za ? za : zb;
@@ -857,7 +857,7 @@ final class SunSweep {
             boolean inner = i + 1 < nMaj;
             int up = inner ? baseI[i + 1] : 0;
             int base = baseI[i];
-            for (int q = q0; q <= q1; q++) {
+            for (int q = q0, qEnd = q1 + 1; q < qEnd; q++) {
                 int j = off + q;
                 int cell = base + sj * j;
                 double z0 = v[cell];

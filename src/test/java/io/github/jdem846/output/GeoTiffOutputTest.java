@@ -189,6 +189,35 @@ class GeoTiffOutputTest {
         }
     }
 
+    /**
+     * Strips compressed on all processors make the same file, byte for byte, as strips compressed one after the
+     * other: more strips than one parallel batch, of relief (the predictor's case), noise and a partial last strip.
+     */
+    @Test
+    void parallelAndSequentialCompressionWriteTheSameFile() throws IOException {
+        int w = 1000;
+        int h = 4000 + 37;   // about 60 strips of 65 rows
+        byte[] gray = new byte[w * h];
+        Random random = new Random(5);
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                gray[y * w + x] = y < h / 2 ? (byte) (128 + 100 * Math.sin(x * 0.01) * Math.cos(y * 0.013))
+                        : (byte) random.nextInt();
+            }
+        }
+        GeoReference geo = GeoReference.of(TestDems.load(TestDems.BIG_TUJUNGA).geometry());
+        Path parallel = dir.resolve("parallel.tif");
+        Path sequential = dir.resolve("sequential.tif");
+        ImageOutput.writeGray(parallel, gray, w, h, geo, WriteOptions.defaults().withParallelCompression(true));
+        ImageOutput.writeGray(sequential, gray, w, h, geo, WriteOptions.defaults().withParallelCompression(false));
+        assertTrue(TiffTags.read(parallel).numbers(279).length > 8 * Runtime.getRuntime().availableProcessors(),
+                "more strips than one batch");
+        assertArrayEquals(java.nio.file.Files.readAllBytes(sequential), java.nio.file.Files.readAllBytes(parallel));
+        byte[] read = new byte[w * h];
+        TiffTags.raster(parallel).getDataElements(0, 0, w, h, read);
+        assertArrayEquals(gray, read);
+    }
+
     /** TIFF 6.0 section 2: IFD and out-of-line values on word boundaries, entries sorted by tag. */
     @Test
     void fileStructureFollowsTheBaselineRules() throws IOException {

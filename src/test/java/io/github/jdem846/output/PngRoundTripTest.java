@@ -113,7 +113,7 @@ class PngRoundTripTest {
         for (boolean parallel : new boolean[]{false, true}) {
             Path file = dir.resolve("l" + level + parallel + ".png");
             ImageOutput.writeRgba(file, argb, 200, 150, null,
-                    OPTIONS.withPngCompressionLevel(level).withParallelPng(parallel));
+                    OPTIONS.withPngCompressionLevel(level).withParallelCompression(parallel));
             assertArrayEquals(argb, readArgb(file, 200, 150));
         }
     }
