@@ -38,7 +38,8 @@ class RenderCommandsTest {
 
     @Test
     void verbosePrintsThePhaseTimesAndQuietRunsDoNot() {
-        for (String[] command : new String[][] {{"hillshade", LUX}, {"tint", LUX}, {"render", LUX}}) {
+        for (String[] command : new String[][] {{"hillshade", LUX}, {"tint", LUX}, {"render", LUX},
+            {"shadows", LUX}}) {
             Path out = dir.resolve(command[0] + ".png");
             CliRun verbose = CliRun.of(command[0], command[1], "-o", out.toString(), "--verbose");
             assertEquals(0, verbose.exitCode(), verbose.err());
