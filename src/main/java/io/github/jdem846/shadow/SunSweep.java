@@ -631,6 +631,22 @@ final class SunSweep {
     }
 
     /**
+     * The major indices a block of lines kFrom … kTo + 1 walks in lockstep, {iStart, iEnd} (from iStart down to
+     * iEnd), or null when the block meets no cell of the window.
+     */
+    private int[] blockRange(Window w, int kFrom, int kTo) {
+        int iStart = w.iTop;
+        int iEnd = w.wi0;
+        if (m > 0) {
+            iStart = (int) Math.min(iStart, Math.floor((nMin - kFrom) / m) + 1);
+            iEnd = (int) Math.max(iEnd, Math.ceil((w.wj0 - kTo - 2) / m) - 1);
+        } else if (kTo + 1 < -1 || kFrom > nMin - 1) {
+            return null;
+        }
+        return iStart < iEnd ? null : new int[] {iStart, iEnd};
+    }
+
+    /**
      * {@link #bands} for hard shadows on the bilinear surface of a grid with one step length and no curvature: the
      * lines kFrom … kTo + 1 are walked in lockstep, one major index at a time from the sun's side, each carrying the
      * running maximum of {@link #walkUniform}, and the cells between them are evaluated as soon as both of their
@@ -643,17 +659,12 @@ final class SunSweep {
         double drop = f.tanElevation * uniformStep;
         double dTan = uniformStep * f.tanElevation;
         double tFirst = (double) firstSample() / SUB_STEPS;
-        int iStart = w.iTop;
-        int iEnd = w.wi0;
-        if (m > 0) {
-            iStart = (int) Math.min(iStart, Math.floor((nMin - kFrom) / m) + 1);
-            iEnd = (int) Math.max(iEnd, Math.ceil((w.wj0 - kTo - 2) / m) - 1);
-        } else if (kTo + 1 < -1 || kFrom > nMin - 1) {
+        int[] range = blockRange(w, kFrom, kTo);
+        if (range == null) {
             return;
         }
-        if (iStart < iEnd) {
-            return;
-        }
+        int iStart = range[0];
+        int iEnd = range[1];
         double[] best = new double[lines];
         double[] prev = new double[lines];
         double[] h = new double[lines];
@@ -779,17 +790,12 @@ final class SunSweep {
         double tan = f.tanElevation;
         double[] steps = f.metresPerStep;
         double tFirst = (double) firstSample() / SUB_STEPS;
-        int iStart = w.iTop;
-        int iEnd = w.wi0;
-        if (m > 0) {
-            iStart = (int) Math.min(iStart, Math.floor((nMin - kFrom) / m) + 1);
-            iEnd = (int) Math.max(iEnd, Math.ceil((w.wj0 - kTo - 2) / m) - 1);
-        } else if (kTo + 1 < -1 || kFrom > nMin - 1) {
+        int[] range = blockRange(w, kFrom, kTo);
+        if (range == null) {
             return;
         }
-        if (iStart < iEnd) {
-            return;
-        }
+        int iStart = range[0];
+        int iEnd = range[1];
         VaryingWalk walk = new VaryingWalk(lines, tan);
         boolean edgeHalf = iStart == nMaj - 1 && upstreamEdgeSample;
         for (int q = 0; q < lines; q++) {
