@@ -79,7 +79,9 @@ public final class DemReader {
             if (d > 1) {
                 g = g.decimate(d, d);
             }
-            return new LoadedDem(info, Dem.ofNormalized(values, g, noData), stats);
+            // at full resolution the window's statistics are those of the grid itself: no second pass later
+            Dem dem = d == 1 ? Dem.ofNormalized(values, g, noData, stats) : Dem.ofNormalized(values, g, noData);
+            return new LoadedDem(info, dem, stats);
         }
     }
 

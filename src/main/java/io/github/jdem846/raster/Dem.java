@@ -52,6 +52,22 @@ public final class Dem {
         return new Dem(values, geometry, declaredNoData, true);
     }
 
+    /**
+     * {@link #ofNormalized} for a reader that took the statistics of {@code values} on its way (min, max and valid
+     * count of exactly these cells, as {@link ElevationStatistics#of} would give them), so that {@link #statistics()}
+     * needs no pass of its own.
+     */
+    public static Dem ofNormalized(float[] values, GridGeometry geometry, double declaredNoData,
+                                   ElevationStatistics statistics) {
+        Dem d = new Dem(values, geometry, declaredNoData, true);
+        if (statistics.totalCount() != values.length) {
+            throw new IllegalArgumentException("statistics of " + statistics.totalCount() + " cells for "
+                    + values.length + " values");
+        }
+        d.statistics = statistics;
+        return d;
+    }
+
     /** A DEM with no declared no-data value (NaN cells are still no-data). */
     public Dem(float[] values, GridGeometry geometry) {
         this(values, geometry, Double.NaN);

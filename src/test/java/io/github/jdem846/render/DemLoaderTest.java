@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.io.DemReader;
+import io.github.jdem846.io.LoadedDem;
+import io.github.jdem846.io.ReadRequest;
 import io.github.jdem846.io.Window;
 import io.github.jdem846.raster.ElevationStatistics;
 import java.io.IOException;
@@ -38,5 +40,28 @@ class DemLoaderTest {
                 OutputSize.scale(0.5), DemLoader.Halo.uniform(7), true);
         assertEquals(file, window.fileStatistics());
         assertTrue(window.dem().statistics().max() < file.max(), "the window holds not the highest cell");
+    }
+
+    /**
+     * A read at full resolution hands its grid the statistics it took on the way, so that shadows and tints need no
+     * pass of their own: they must be exactly those of the grid's cells (no-data, scale and offset applied), and a
+     * decimated grid must keep its own.
+     */
+    @Test
+    void theStatisticsAReadTookAreThoseOfItsGrid() throws IOException {
+        String[] files = {"testdata/dem/luxembourg_srtm30s_wgs84.tif", "testdata/dem/luxembourg_srtm30s_wgs84.flt",
+            "testdata/dem/bigtujunga_srtm30m_utm11n.tif",
+            "testdata/formats/volcano_int16_decimetres_scale0.1_offset50_nodata440.tif"};
+        ReadRequest[] requests = {ReadRequest.FULL, ReadRequest.of(Window.cells(10, 20, 50, 40)),
+            ReadRequest.decimated(3)};
+        for (String file : files) {
+            for (ReadRequest request : requests) {
+                LoadedDem loaded = DemReader.load(Path.of(file), request);
+                assertEquals(ElevationStatistics.of(loaded.dem().backingArray()), loaded.dem().statistics(),
+                        file + " " + request);
+            }
+        }
+        LoadedDem lux = DemReader.load(Path.of(files[0]), ReadRequest.FULL);
+        assertTrue(lux.dem().statistics().noDataCount() > 0, "the no-data rule is part of what is checked");
     }
 }
