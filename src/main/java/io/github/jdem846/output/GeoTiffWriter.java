@@ -48,7 +48,7 @@ final class GeoTiffWriter {
     /**
      * Writes {@code pixels} to {@code file} (created or truncated).
      *
-     * @param geo    the georeferencing, or {@code null} for a plain TIFF
+     * @param geo      the georeferencing, or {@code null} for a plain TIFF
      * @param noData   the GDAL_NODATA value, or {@code null} for none
      * @param parallel compress the strips on all processors (the file is the same byte for byte)
      */

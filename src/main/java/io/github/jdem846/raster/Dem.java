@@ -53,7 +53,7 @@ public final class Dem {
     }
 
     /**
-     * {@link #ofNormalized} for a reader that took the statistics of {@code values} on its way (min, max and valid
+     * {@link #ofNormalized(float[], GridGeometry, double)} for a reader that took the statistics of {@code values} on its way (min, max and valid
      * count of exactly these cells, as {@link ElevationStatistics#of} would give them), so that {@link #statistics()}
      * needs no pass of its own.
      */

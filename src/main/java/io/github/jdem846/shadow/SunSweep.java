@@ -878,6 +878,7 @@ final class SunSweep {
             }
         }
     }
+
     /**
      * The lines of {@link #bandsVaryingHard}: per line, the running maximum of z + tan·P over its samples from two
      * steps upstream on, the two samples still to join, P at the current major index and the line's top (P = 0).
