@@ -53,9 +53,9 @@ public final class Dem {
     }
 
     /**
-     * {@link #ofNormalized(float[], GridGeometry, double)} for a reader that took the statistics of {@code values} on its way (min, max and valid
-     * count of exactly these cells, as {@link ElevationStatistics#of} would give them), so that {@link #statistics()}
-     * needs no pass of its own.
+     * {@link #ofNormalized(float[], GridGeometry, double)} for a reader that took the statistics of {@code values}
+     * on its way (min, max and valid count of exactly these cells, as {@link ElevationStatistics#of} would give
+     * them), so that {@link #statistics()} needs no pass of its own.
      */
     public static Dem ofNormalized(float[] values, GridGeometry geometry, double declaredNoData,
                                    ElevationStatistics statistics) {
