@@ -126,10 +126,25 @@ class SunSweepConsistencyTest {
             Dem dem = t % 3 == 2 ? nearPole(rnd) : synthetic(rnd, true);
             assertLockstepEqualsLineByLine(dem, t, rnd);
         }
+        // suns on the grid axes and diagonals (lines through cell centres, m = 0 or 1), south of the equator too
+        double[] axes = {0, 45, 90, 135, 180, 225, 270, 315};
+        for (int t = 0; t < axes.length; t++) {
+            Dem north = synthetic(rnd, true);
+            Dem south = new Dem(north.backingArray(), new GridGeometry(north.width(), north.height(), 150,
+                    -rnd.nextDouble() * 50, 0.001, 0.002, CrsInfo.geographic("WGS 84", 4326, Ellipsoid.WGS84),
+                    PixelAnchor.CORNER));
+            for (Dem dem : new Dem[] {north, south}) {
+                assertLockstepEqualsLineByLine(dem, new LightDirection(axes[t], 1 + rnd.nextDouble() * 30), t);
+            }
+        }
     }
 
     private static void assertLockstepEqualsLineByLine(Dem dem, int t, Random rnd) {
-        LightDirection light = new LightDirection(t * 6 + rnd.nextDouble() * 6, 0.5 + rnd.nextDouble() * 60);
+        assertLockstepEqualsLineByLine(dem, new LightDirection(t * 6 + rnd.nextDouble() * 6,
+                0.5 + rnd.nextDouble() * 60), t);
+    }
+
+    private static void assertLockstepEqualsLineByLine(Dem dem, LightDirection light, int t) {
         for (ShadowOptions o : new ShadowOptions[] {ShadowOptions.DEFAULTS, THIN}) {
             float[] fast = sweep(dem, light, o, true, three);
             float[] reference = sweep(dem, light, o, false, one);
