@@ -132,6 +132,30 @@ public enum ShadowAlgorithm {
         ShadowOptions hard = options.withSoftShadows(false);
         double e = light.elevationDegrees();
         double r = options.sunDiameterDegrees() / 2;
+        double[] levels = softLevels(e, r);
+        int n = out.length;
+        int[] highestBlocked = highestBlockedInOneWalk(dem, light, hard, pool, window, levels);
+        if (highestBlocked == null) {
+            highestBlocked = highestBlockedLevelByLevel(dem, light, hard, pool, window, levels);
+        }
+        for (int i = 0; i < n; i++) {
+            int k = highestBlocked[i];
+            if (k < 0) {
+                out[i] = 0f;
+            } else if (k == levels.length - 1) {
+                out[i] = 1f;
+            } else {
+                double horizon = levels[k] == 0 ? 0 : 0.5 * (levels[k] + levels[k + 1]);
+                out[i] = (float) SunDisk.hiddenFraction(e, horizon, r);
+            }
+        }
+    }
+
+    /**
+     * The ascending sun elevations of the soft sweep's hard sweeps: {@link #SOFT_SWEEP_LEVELS} + 1 across the disk
+     * of radius {@code r} around {@code e}, and the horizon when the disk straddles it.
+     */
+    static double[] softLevels(double e, double r) {
         java.util.TreeSet<Double> angles = new java.util.TreeSet<>();
         for (int k = 0; k <= SOFT_SWEEP_LEVELS; k++) {
             angles.add(e - r + 2 * r * k / SOFT_SWEEP_LEVELS);
@@ -139,8 +163,18 @@ public enum ShadowAlgorithm {
         if (e - r < 0 && e + r > 0) {
             angles.add(0.0);
         }
-        double[] levels = angles.stream().mapToDouble(Double::doubleValue).toArray();
-        int n = out.length;
+        return angles.stream().mapToDouble(Double::doubleValue).toArray();
+    }
+
+    /**
+     * Per cell of {@code window}, the highest of the ascending sun elevations {@code levels} at which it is in hard
+     * shadow (−1 = none), from hard sweeps one elevation after another, the lowest first; a level at or below the
+     * horizon shades every valid cell, none at or above the zenith does, and once a level shades no cell the higher
+     * ones are not swept.
+     */
+    static int[] highestBlockedLevelByLevel(Dem dem, LightDirection light, ShadowOptions hard,
+                                                    ForkJoinPool pool, CellWindow window, double[] levels) {
+        int n = window.width() * window.height();
         int[] highestBlocked = new int[n];
         java.util.Arrays.fill(highestBlocked, -1);
         float[] level = new float[n];
@@ -170,17 +204,69 @@ public enum ShadowAlgorithm {
                 break;                                   // a higher sun is blocked nowhere either
             }
         }
+        return highestBlocked;
+    }
+
+    /**
+     * {@link #highestBlockedLevelByLevel}, the same numbers from one sweep that walks all elevations above the
+     * horizon at once ({@code SunSweep.runLevels}), or null when this grid and these options need the sweep's
+     * general path.
+     */
+    static int[] highestBlockedInOneWalk(Dem dem, LightDirection light, ShadowOptions hard,
+                                                 ForkJoinPool pool, CellWindow window, double[] levels) {
+        int first = 0;                                   // the first level above the horizon
+        while (first < levels.length && levels[first] <= 0) {
+            first++;
+        }
+        int end = first;                                 // levels first … end − 1 are swept
+        while (end < levels.length && levels[end] < 90) {
+            end++;
+        }
+        if (end == first || end - first > 31) {
+            return null;
+        }
+        double azimuth = light.azimuthDegrees();
+        LightDirection lowest = new LightDirection(azimuth, levels[first]);
+        RayFrame frame = new RayFrame(dem, lowest, hard);
+        boolean bilinear = hard.sampling() != Sampling.NEAREST;
+        SunSweep sweep = new SunSweep(dem, frame, bilinear, bilinear && hard.firstCellTest(), true,
+                hard.terrainMinimum(), hard.thinFeatures());
+        if (!sweep.canRunLevels()) {
+            return null;
+        }
+        double[] tans = new double[end - first];
+        for (int k = first; k < end; k++) {
+            tans[k - first] = new RayFrame(dem, new LightDirection(azimuth, levels[k]), hard).tanElevation;
+        }
+        int halo = window.width() == dem.width() && window.height() == dem.height() ? Integer.MAX_VALUE
+                : ShadowHalo.sweepSteps(frame, sweep.lowestFloor(), lowest, hard);
+        int n = window.width() * window.height();
+        int[] bits = new int[n];
+        sweep.runLevels(window, halo, tans, bits, pool);
+        // the level-by-level rule: stop at the first level that shades no cell (levels below the horizon shade
+        // every valid cell; with none, every cell is −1 anyway) or at the zenith
+        int union = 0;
+        for (int b : bits) {
+            union |= b;
+        }
+        int swept = 0;
+        while (swept < end - first && (union >>> swept & 1) != 0) {
+            swept++;
+        }
+        int kept = (int) ((1L << swept) - 1);
+        float[] v = dem.backingArray();
+        int[] highest = new int[n];
+        int w = window.width();
         for (int i = 0; i < n; i++) {
-            int k = highestBlocked[i];
-            if (k < 0) {
-                out[i] = 0f;
-            } else if (k == levels.length - 1) {
-                out[i] = 1f;
+            int b = bits[i] & kept;
+            if (b != 0) {
+                highest[i] = first + 31 - Integer.numberOfLeadingZeros(b);
             } else {
-                double horizon = levels[k] == 0 ? 0 : 0.5 * (levels[k] + levels[k + 1]);
-                out[i] = (float) SunDisk.hiddenFraction(e, horizon, r);
+                float z = v[(window.row() + i / w) * dem.width() + window.col() + i % w];
+                highest[i] = z == z ? first - 1 : -1;
             }
         }
+        return highest;
     }
 
     /**

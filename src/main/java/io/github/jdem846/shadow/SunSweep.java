@@ -73,6 +73,8 @@ final class SunSweep {
     /** The floor of every row when the step is the same on all rows (NaN otherwise), and the lowest floor. */
     private final double uniformFloor;
     private final double lowestFloor;
+    /** The lowest terrain the floors start from: the file's or the grid's minimum. */
+    private final double lowestTerrain;
 
     /**
      * The last minor cell the lines read, min(nMin − 1, the root grid's last one in this frame). Rays leave the grid
@@ -126,6 +128,7 @@ final class SunSweep {
         this.firstCellTest = firstCellTest;
         double own = dem.statistics().min();
         double lowest = Double.isNaN(terrainMinimum) ? own : Math.min(terrainMinimum, own);
+        this.lowestTerrain = lowest;
         this.floorOfRow = new double[frame.metresPerStep.length];
         double lowestF = Double.POSITIVE_INFINITY;
         for (int r = 0; r < floorOfRow.length; r++) {
@@ -229,6 +232,47 @@ final class SunSweep {
      * terrain up to {@code haloSteps} major steps upstream of the window (Integer.MAX_VALUE = the whole grid).
      */
     void run(CellWindow win, int haloSteps, float[] out, ForkJoinPool pool) {
+        boolean lockstep = lockstepAllowed && bilinear && f.curvature == 0 && uniformStep == uniformStep;
+        boolean varying = lockstepAllowed && bilinear && f.curvature == 0 && uniformStep != uniformStep
+                && !thinFeatures;
+        forEachBlock(win, haloSteps, out, pool, (w, from, to) -> {
+            if (lockstep) {
+                bandsUniformHard(w, from, to);
+            } else if (varying) {
+                bandsVaryingHard(w, from, to);
+            } else {
+                bands(w, from, to);
+            }
+        });
+    }
+
+    /** True when {@link #runLevels} can walk several sun elevations at once (the lockstep case of {@link #run}). */
+    boolean canRunLevels() {
+        return lockstepAllowed && bilinear && f.curvature == 0 && uniformStep == uniformStep && !thinFeatures;
+    }
+
+    /**
+     * For the sun elevations whose tangents are {@code tans} (at most 31, same azimuth as this sweep's frame), sets
+     * bit k of {@code bits[c]} when cell c of {@code win} (row-major, row length win.width()) is in shadow at
+     * elevation k, exactly as {@link #run} with a frame at that elevation would find it, in one walk: the lines'
+     * samples do not depend on the elevation, only the running maxima do. {@code haloSteps} must cover the lowest
+     * elevation. Only when {@link #canRunLevels()}.
+     */
+    void runLevels(CellWindow win, int haloSteps, double[] tans, int[] bits, ForkJoinPool pool) {
+        if (!canRunLevels() || tans.length > 31) {
+            throw new IllegalStateException("runLevels needs the lockstep case and at most 31 elevations");
+        }
+        forEachBlock(win, haloSteps, null, pool, (w, from, to) -> bandsLevels(w, from, to, tans, bits));
+    }
+
+    /** One block of lines kFrom … kTo + 1 of a window. */
+    @FunctionalInterface
+    private interface BlockWork {
+        void run(Window w, int kFrom, int kTo);
+    }
+
+    /** Splits the lines that reach {@code win} into blocks of {@link #LINES_PER_TASK} and runs them on the pool. */
+    private void forEachBlock(CellWindow win, int haloSteps, float[] out, ForkJoinPool pool, BlockWork work) {
         int ia = frameI(win.col(), win.row());
         int ib = frameI(win.colEnd() - 1, win.rowEnd() - 1);
         int ja = frameJ(win.col(), win.row());
@@ -241,9 +285,6 @@ final class SunSweep {
         int kMin = wj0 - pf[wi1] - 1;
         int kMax = wj1 - pf[wi0];
         Window w = new Window(win, wi0, wi1, wj0, wj1, iTop, out);
-        boolean lockstep = lockstepAllowed && bilinear && f.curvature == 0 && uniformStep == uniformStep;
-        boolean varying = lockstepAllowed && bilinear && f.curvature == 0 && uniformStep != uniformStep
-                && !thinFeatures;
         List<RecursiveAction> tasks = new ArrayList<>();
         for (int k = kMin; k <= kMax; k += LINES_PER_TASK) {
             int from = k;
@@ -251,13 +292,7 @@ final class SunSweep {
             tasks.add(new RecursiveAction() {
                 @Override
                 protected void compute() {
-                    if (lockstep) {
-                        bandsUniformHard(w, from, to);
-                    } else if (varying) {
-                        bandsVaryingHard(w, from, to);
-                    } else {
-                        bands(w, from, to);
-                    }
+                    work.run(w, from, to);
                 }
             });
         }
@@ -433,8 +468,12 @@ final class SunSweep {
      * per major index, each at most 8·S samples.
      */
     private boolean rayBlockedToEdge(int i, int j, double z0) {
+        return rayBlockedToEdge(i, j, z0, f.tanElevation);
+    }
+
+    /** {@link #rayBlockedToEdge(int, int, double)} for a sun whose elevation has the tangent {@code tan}. */
+    private boolean rayBlockedToEdge(int i, int j, double z0, double tan) {
         double d = f.metresPerStep[rowOf(i, j)];
-        double tan = f.tanElevation;
         double bc = f.curvature;
         double room = cellHi - j + 0.5;
         for (int q = SUB_STEPS + 1; ; q++) {
@@ -758,7 +797,7 @@ final class SunSweep {
                 if (z0 == z0) {
                     boolean shadow = between(h[q], h[q + 1], phi, uniformFloor) > z0
                             || thinFeatures && strips.blocks(this, q, kFrom + q, i, phi, z0, drop)
-                            || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
+                            || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst, f.tanElevation);
                     result = shadow ? 1f : 0f;
                 }
                 out[outBase + outStrideJ * j] = result;
@@ -770,11 +809,139 @@ final class SunSweep {
                 float result = 0f;
                 if (z0 == z0) {
                     boolean shadow = rayBlockedToEdge(i, j, z0)
-                            || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst);
+                            || firstStepBlocked(i, j, cell, z0, inner, up, dTan, tFirst, f.tanElevation);
                     result = shadow ? 1f : 0f;
                 }
                 out[outBase + outStrideJ * j] = result;
             }
+        }
+    }
+
+    /**
+     * {@link #bandsUniformHard} for several sun elevations at once ({@link #runLevels}): each line's sample is read
+     * once and feeds one running maximum per elevation, and each cell gets one bit per elevation, decided by exactly
+     * the arithmetic of a single-elevation walk (its drop, floor and first-cell test).
+     */
+    private void bandsLevels(Window w, int kFrom, int kTo, double[] tans, int[] bits) {
+        int lines = kTo - kFrom + 2;
+        int n = tans.length;
+        double[] drop = new double[n];
+        double[] dTan = new double[n];
+        double[] floor = new double[n];
+        for (int e = 0; e < n; e++) {
+            drop[e] = tans[e] * uniformStep;
+            dTan[e] = uniformStep * tans[e];
+            floor[e] = lowestTerrain - ShadowHalo.FLOOR_STEPS * uniformStep * tans[e];
+        }
+        double tFirst = (double) firstSample() / SUB_STEPS;
+        int[] range = blockRange(w, kFrom, kTo);
+        if (range == null) {
+            return;
+        }
+        int iStart = range[0];
+        int iEnd = range[1];
+        // per line q, elevation e at q·n + e
+        double[] best = new double[lines * n];
+        double[] prev = new double[lines * n];
+        double[] h = new double[lines * n];
+        java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
+        java.util.Arrays.fill(prev, Double.NEGATIVE_INFINITY);
+        if (iStart == nMaj - 1 && upstreamEdgeSample) {
+            for (int q = 0; q < lines; q++) {
+                for (int e = 0; e < n; e++) {
+                    prev[q * n + e] = edgeStart(kFrom + q, drop[e]);
+                }
+            }
+        }
+        CellWindow win = w.win;
+        int outStrideJ = rj * win.width() + cj;
+        int sj = strideJ;
+        for (int i = iStart; i >= iEnd; i--) {
+            int pfi = pf[i];
+            double fr = pr[i];
+            int base = baseI[i];
+            int qa = Math.max(0, -kFrom - pfi);
+            int qb = Math.min(lines - 1, cellHi - 1 - kFrom - pfi);
+            int before = Math.min(qa, lines);
+            for (int q = 0; q < before; q++) {
+                advanceLevels(best, prev, h, q * n, n, lineSample(kFrom + q, i), drop);
+            }
+            if (qa <= qb) {
+                int at = base + sj * (kFrom + qa + pfi);
+                double za = v[at];
+                for (int q = qa, qEnd = qb + 1; q < qEnd; q++) {
+                    at += sj;
+                    double zb = v[at];
+                    double z = fr == 0 ? za : za == za && zb == zb ? za + (zb - za) * fr : za == za ? za : zb;
+                    advanceLevels(best, prev, h, q * n, n, z, drop);
+                    za = zb;
+                }
+            }
+            for (int q = Math.max(qb + 1, before); q < lines; q++) {
+                advanceLevels(best, prev, h, q * n, n, lineSample(kFrom + q, i), drop);
+            }
+            if (i > w.wi1) {
+                continue;
+            }
+            int c = fr > 0 ? 1 : 0;
+            double phi = fr > 0 ? 1 - fr : 0;
+            int off = kFrom + pfi + c;
+            int q0 = Math.max(0, w.wj0 - off);
+            int q1 = Math.min(lines - 2, w.wj1 - off);
+            if (q0 > q1) {
+                continue;
+            }
+            int outBase = (r0 + ri * i - win.row()) * win.width() + (c0 + ci * i - win.col());
+            boolean inner = i + 1 < nMaj;
+            int up = inner ? baseI[i + 1] : 0;
+            for (int q = q0, qEnd = q1 + 1; q < qEnd; q++) {
+                int j = off + q;
+                int cell = base + sj * j;
+                double z0 = v[cell];
+                int blocked = 0;
+                if (z0 == z0) {
+                    boolean edge = j >= jTraced;
+                    // the first-cell test of firstStepBlocked, its terms that do not depend on the elevation once
+                    boolean closed = inner && j + 1 < nMin;
+                    boolean above = false;
+                    double lin0 = 0;
+                    double quad = 0;
+                    if (closed) {
+                        int u = up + sj * j;
+                        double z10 = v[u];
+                        double z01 = v[cell + sj];
+                        double z11 = v[u + sj];
+                        lin0 = (z10 - z0) + (z01 - z0) * m;
+                        quad = (z11 - z10 - z01 + z0) * m;
+                        closed = lin0 + quad == lin0 + quad;       // no no-data corner
+                        above = z10 > z0 | z01 > z0 | z11 > z0;
+                    }
+                    for (int e = 0; e < n; e++) {
+                        boolean lineShadow = edge ? rayBlockedToEdge(i, j, z0, tans[e])
+                                : between(h[q * n + e], h[(q + 1) * n + e], phi, floor[e]) > z0;
+                        double lin = lin0 - dTan[e];
+                        boolean first = closed ? above & (lin + quad * tFirst > 0 | lin + quad > 0)
+                                : firstStepBlocked(i, j, cell, z0, inner, up, dTan[e], tFirst, tans[e]);
+                        if (lineShadow || first) {
+                            blocked |= 1 << e;
+                        }
+                    }
+                }
+                bits[outBase + outStrideJ * j] = blocked;
+            }
+        }
+    }
+
+    /** {@link #advance} of one line for each elevation: its values at {@code off} … {@code off + n − 1}. */
+    private static void advanceLevels(double[] best, double[] prev, double[] h, int off, int n, double z,
+                                      double[] drop) {
+        for (int e = 0; e < n; e++) {
+            int at = off + e;
+            double b = best[at];
+            double p = prev[at];
+            h[at] = b;
+            best[at] = (b >= p ? b : p) - drop[e];
+            prev[at] = z == z ? z - drop[e] : Double.NEGATIVE_INFINITY;
         }
     }
 
@@ -872,7 +1039,8 @@ final class SunSweep {
                     int row = rowOf(i, j);
                     boolean shadow = j >= jTraced ? rayBlockedToEdge(i, j, z0)
                             : between(h[q], h[q + 1], phi, floorOfRow[row]) > z0;
-                    result = shadow || firstStepBlocked(i, j, cell, z0, inner, up, steps[row] * tan, tFirst) ? 1f : 0f;
+                    result = shadow || firstStepBlocked(i, j, cell, z0, inner, up, steps[row] * tan, tFirst, tan)
+                            ? 1f : 0f;
                 }
                 out[outBase + outStrideJ * j] = result;
             }
@@ -1102,12 +1270,13 @@ final class SunSweep {
      * terrain − ray along the first step is t·(lin + quad·t), decided at the first and the last sample; a no-data
      * corner makes lin + quad NaN (also when m = 0), and then, or at the last row or column, localBlocked decides.
      *
-     * @param up the flat index of frame cell (i + 1, 0) when {@code inner}
+     * @param up  the flat index of frame cell (i + 1, 0) when {@code inner}
+     * @param tan the tangent of the sun's elevation (dTan = the step's length × tan)
      */
     private boolean firstStepBlocked(int i, int j, int cell, double z0, boolean inner, int up, double dTan,
-                                     double tFirst) {
+                                     double tFirst, double tan) {
         if (!inner || j + 1 >= nMin) {
-            return localBlocked(i, j, z0);
+            return localBlocked(i, j, z0, tan);
         }
         int sj = strideJ;
         int u = up + sj * j;
@@ -1120,7 +1289,7 @@ final class SunSweep {
         if (end == end) {
             return (z10 > z0 | z01 > z0 | z11 > z0) & (lin + quad * tFirst > 0 | end > 0);
         }
-        return localBlocked(i, j, z0);
+        return localBlocked(i, j, z0, tan);
     }
 
     private static void advance(double[] best, double[] prev, double[] h, int q, double z, double drop) {
@@ -1206,8 +1375,12 @@ final class SunSweep {
 
     /** True when the ray from cell (i, j) is blocked within its first major step. */
     private boolean localBlocked(int i, int j, double z0) {
+        return localBlocked(i, j, z0, f.tanElevation);
+    }
+
+    /** {@link #localBlocked(int, int, double)} for a sun whose elevation has the tangent {@code tan}. */
+    private boolean localBlocked(int i, int j, double z0, double tan) {
         double d = f.metresPerStep[rowOf(i, j)];
-        double tan = f.tanElevation;
         double bc = f.curvature;
         if (bilinear && i + 1 < nMaj && j + 1 < nMin) {
             double z10 = v[idx(i + 1, j)];

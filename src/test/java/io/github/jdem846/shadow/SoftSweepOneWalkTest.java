@@ -1,0 +1,114 @@
+package io.github.jdem846.shadow;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.github.jdem846.io.DemReader;
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.GridGeometry;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Random;
+import java.util.concurrent.ForkJoinPool;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The soft sweep's one walk over all the disk's elevations ({@code SunSweep.runLevels}) against its definition, hard
+ * sweeps one elevation after another: the highest shaded elevation of every cell must be the same, for whole grids
+ * and windows, suns straddling the horizon or near the zenith, and grids with no-data.
+ */
+class SoftSweepOneWalkTest {
+
+    private static final double[] ELEVATIONS = {0.1, 0.3, 2, 5, 20, 45, 89.8};
+    private static final double[] AZIMUTHS = {0, 45, 100, 250, 300};
+    private static final ShadowOptions HARD = ShadowOptions.DEFAULTS;
+
+    private static ForkJoinPool pool;
+
+    @BeforeAll
+    static void start() {
+        pool = new ForkJoinPool(3);
+    }
+
+    @AfterAll
+    static void stop() {
+        pool.shutdownNow();
+    }
+
+    private static int[] assertSameLevels(Dem dem, LightDirection light, CellWindow window) {
+        double r = ShadowOptions.DEFAULTS.sunDiameterDegrees() / 2;
+        double[] levels = ShadowAlgorithm.softLevels(light.elevationDegrees(), r);
+        int[] oneWalk = ShadowAlgorithm.highestBlockedInOneWalk(dem, light, HARD, pool, window, levels);
+        assertNotNull(oneWalk, "a projected grid with the default options takes the one walk");
+        int[] reference = ShadowAlgorithm.highestBlockedLevelByLevel(dem, light, HARD, pool, window, levels);
+        assertArrayEquals(reference, oneWalk, light + " " + window);
+        return oneWalk;
+    }
+
+    @Test
+    void realDemsWholeGrids() throws IOException {
+        Dem bigTujunga = DemReader.read(Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.flt")).crop(400, 100, 300, 220);
+        Dem volcano = DemReader.read(Path.of("testdata/dem/maungawhau-volcano_10m_nztm-approx.flt"));
+        Dem lux = DemReader.read(Path.of("testdata/dem/luxembourg_srtm30s_wgs84.flt"));
+        // Luxembourg's border of no-data on a projected grid of 900 m cells
+        Dem luxMetric = new Dem(lux.backingArray().clone(), GridGeometry.metric(lux.width(), lux.height(), 900));
+        long between = 0;
+        for (Dem dem : new Dem[] {bigTujunga, volcano, luxMetric}) {
+            for (double e : ELEVATIONS) {
+                for (double a : AZIMUTHS) {
+                    LightDirection light = new LightDirection(a, e);
+                    int[] levels = assertSameLevels(dem, light, CellWindow.whole(dem.width(), dem.height()));
+                    int top = ShadowAlgorithm.softLevels(e, ShadowOptions.DEFAULTS.sunDiameterDegrees() / 2).length - 1;
+                    for (int k : levels) {
+                        between += k >= 0 && k < top ? 1 : 0;
+                    }
+                }
+            }
+        }
+        assertTrue(between > 1000, "the comparison must include penumbra cells, got " + between);
+    }
+
+    @Test
+    void windowsAndNoDataStripes() {
+        Random rnd = new Random(530);
+        for (int t = 0; t < 40; t++) {
+            int w = 30 + rnd.nextInt(90);
+            int h = 30 + rnd.nextInt(90);
+            Dem dem = ShadowTestDems.rough(w, h, 10 + rnd.nextDouble() * 40, rnd.nextLong(), 50 + rnd.nextDouble() * 400);
+            float[] v = dem.backingArray();
+            int from = rnd.nextInt(w);
+            for (int y = 0; y < h; y++) {
+                for (int x = from; x < Math.min(w, from + 1 + rnd.nextInt(3)); x++) {
+                    v[y * w + x] = Float.NaN;
+                }
+            }
+            Dem withNoData = new Dem(v, dem.geometry());
+            LightDirection light = new LightDirection(rnd.nextDouble() * 360, 0.05 + rnd.nextDouble() * 30);
+            int cw = 1 + rnd.nextInt(w);
+            int ch = 1 + rnd.nextInt(h);
+            CellWindow window = new CellWindow(rnd.nextInt(w - cw + 1), rnd.nextInt(h - ch + 1), cw, ch);
+            assertSameLevels(withNoData, light, window);
+            assertSameLevels(withNoData, light, CellWindow.whole(w, h));
+        }
+    }
+
+    @Test
+    void otherCasesKeepTheLevelByLevelPath() throws IOException {
+        Dem jacksboro = DemReader.read(Path.of("testdata/dem/jacksboro_srtm3s_wgs84.flt"));
+        Dem metric = ShadowTestDems.rough(60, 50, 30, 7L, 300);
+        LightDirection light = new LightDirection(250, 5);
+        double[] levels = ShadowAlgorithm.softLevels(5, ShadowOptions.DEFAULTS.sunDiameterDegrees() / 2);
+        CellWindow whole = CellWindow.whole(60, 50);
+        assertNull(ShadowAlgorithm.highestBlockedInOneWalk(jacksboro, light, HARD, pool,
+                CellWindow.whole(jacksboro.width(), jacksboro.height()), levels), "lat/lon: a step length per row");
+        assertNull(ShadowAlgorithm.highestBlockedInOneWalk(metric, light, HARD.withEarthCurvature(true), pool, whole,
+                levels), "curvature");
+        assertNull(ShadowAlgorithm.highestBlockedInOneWalk(metric, light, HARD.withThinFeatures(true), pool, whole,
+                levels), "thin features");
+    }
+}
