@@ -172,8 +172,8 @@ public enum ShadowAlgorithm {
      * horizon shades every valid cell, none at or above the zenith does, and once a level shades no cell the higher
      * ones are not swept.
      */
-    static int[] highestBlockedLevelByLevel(Dem dem, LightDirection light, ShadowOptions hard,
-                                                    ForkJoinPool pool, CellWindow window, double[] levels) {
+    static int[] highestBlockedLevelByLevel(Dem dem, LightDirection light, ShadowOptions hard, ForkJoinPool pool,
+                                            CellWindow window, double[] levels) {
         int n = window.width() * window.height();
         int[] highestBlocked = new int[n];
         java.util.Arrays.fill(highestBlocked, -1);
@@ -212,8 +212,8 @@ public enum ShadowAlgorithm {
      * horizon at once ({@code SunSweep.runLevels}), or null when this grid and these options need the sweep's
      * general path.
      */
-    static int[] highestBlockedInOneWalk(Dem dem, LightDirection light, ShadowOptions hard,
-                                                 ForkJoinPool pool, CellWindow window, double[] levels) {
+    static int[] highestBlockedInOneWalk(Dem dem, LightDirection light, ShadowOptions hard, ForkJoinPool pool,
+                                         CellWindow window, double[] levels) {
         int first = 0;                                   // the first level above the horizon
         while (first < levels.length && levels[first] <= 0) {
             first++;
