@@ -31,8 +31,9 @@ import org.openjdk.jmh.annotations.Warmup;
  * score is milliseconds per whole grid, so score / cells is the cost of one ray ({@code march}, {@code exact}) or of
  * one cell ({@code sweep}). {@code exact} runs at 512² only. The DEM ({@code dem} parameter) is the seeded fractal
  * ({@link FractalDem}, seed 846, 30 m cells; the default) or {@code mirrored}: Big Tujunga SRTM 30 m mirror-tiled
- * ({@link MirroredDem}; real mountains, read from testdata, so run from the worktree root), or {@code mirrored-latlon}: the
- * same on a 1″ lat/lon grid ({@link #onLatLonGrid}), where the step length changes from row to row.
+ * ({@link MirroredDem}; real mountains, read from testdata, so run from the worktree root), or
+ * {@code mirrored-latlon}: the same on a 1″ lat/lon grid ({@link #onLatLonGrid}), where the step length changes from
+ * row to row.
  *
  * <pre>./mvnw -B -o -q -Pjmh package -DskipTests
  * java -jar target/benchmarks.jar RayTraceBenchmark -f 1 -wi 2 -i 3

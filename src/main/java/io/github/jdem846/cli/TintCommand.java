@@ -46,7 +46,8 @@ public final class TintCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         PhaseTimes times = new PhaseTimes();
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(null);
-        KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem, scene), input.file());
+        KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem, scene),
+                input.file());
         DemLoader.Loaded loaded = input.load(DemLoader.Halo.NONE, scene.tint() != null);
         warmUp.stop();
         times.lap("read");

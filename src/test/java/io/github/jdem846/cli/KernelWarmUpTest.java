@@ -55,7 +55,8 @@ class KernelWarmUpTest {
         GridGeometry latLon = KernelWarmUp.geometryLike(Path.of("testdata/dem/jacksboro_srtm3s_wgs84.tif"));
         assertTrue(latLon.crs().isGeographic(), "a lat/lon input gets a lat/lon grid");
         assertEquals(1.0 / 3600, latLon.cellWidth(), 1e-15);
-        assertTrue(Math.abs(latLon.originY() - (36.7329167 - 172.0 / 1200)) < 1e-6, "at the input's latitude: " + latLon.originY());
+        assertTrue(Math.abs(latLon.originY() - (36.7329167 - 172.0 / 1200)) < 1e-6,
+                "at the input's latitude (the middle row of Jacksboro's 344 rows of 3″): " + latLon.originY());
         GridGeometry utm = KernelWarmUp.geometryLike(Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.tif"));
         assertTrue(utm.crs() == null || !utm.crs().isGeographic(), "a projected input gets a metric grid");
         assertEquals(30, utm.cellWidth());

@@ -79,7 +79,8 @@ class SoftSweepOneWalkTest {
         for (int t = 0; t < 40; t++) {
             int w = 30 + rnd.nextInt(90);
             int h = 30 + rnd.nextInt(90);
-            Dem dem = ShadowTestDems.rough(w, h, 10 + rnd.nextDouble() * 40, rnd.nextLong(), 50 + rnd.nextDouble() * 400);
+            Dem dem = ShadowTestDems.rough(w, h, 10 + rnd.nextDouble() * 40, rnd.nextLong(),
+                    50 + rnd.nextDouble() * 400);
             float[] v = dem.backingArray();
             int from = rnd.nextInt(w);
             for (int y = 0; y < h; y++) {
