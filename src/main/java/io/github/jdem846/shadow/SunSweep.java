@@ -246,9 +246,9 @@ final class SunSweep {
         });
     }
 
-    /** True when {@link #runLevels} can walk several sun elevations at once (the lockstep case of {@link #run}). */
+    /** True when {@link #runLevels} can walk several sun elevations at once (the lockstep cases of {@link #run}). */
     boolean canRunLevels() {
-        return lockstepAllowed && bilinear && f.curvature == 0 && uniformStep == uniformStep && !thinFeatures;
+        return lockstepAllowed && bilinear && f.curvature == 0 && !thinFeatures;
     }
 
     /**
@@ -262,7 +262,14 @@ final class SunSweep {
         if (!canRunLevels() || tans.length > 31) {
             throw new IllegalStateException("runLevels needs the lockstep case and at most 31 elevations");
         }
-        forEachBlock(win, haloSteps, null, pool, (w, from, to) -> bandsLevels(w, from, to, tans, bits));
+        boolean uniform = uniformStep == uniformStep;
+        forEachBlock(win, haloSteps, null, pool, (w, from, to) -> {
+            if (uniform) {
+                bandsLevels(w, from, to, tans, bits);
+            } else {
+                bandsLevelsVarying(w, from, to, tans, bits);
+            }
+        });
     }
 
     /** One block of lines kFrom … kTo + 1 of a window. */
@@ -928,6 +935,159 @@ final class SunSweep {
                     }
                 }
                 bits[outBase + outStrideJ * j] = blocked;
+            }
+        }
+    }
+
+    /**
+     * {@link #bandsLevels} on a grid whose step length changes from row to row: {@link #bandsVaryingHard}'s walk with
+     * one running maximum per elevation (the distance P along each line is the same for all of them).
+     */
+    private void bandsLevelsVarying(Window w, int kFrom, int kTo, double[] tans, int[] bits) {
+        int lines = kTo - kFrom + 2;
+        int n = tans.length;
+        double[] steps = f.metresPerStep;
+        double tFirst = (double) firstSample() / SUB_STEPS;
+        int[] range = blockRange(w, kFrom, kTo);
+        if (range == null) {
+            return;
+        }
+        int iStart = range[0];
+        int iEnd = range[1];
+        VaryingLevels walk = new VaryingLevels(lines, tans);
+        boolean edgeHalf = iStart == nMaj - 1 && upstreamEdgeSample;
+        for (int q = 0; q < lines; q++) {
+            int k = kFrom + q;
+            int top = m > 0 ? (int) Math.min(nMaj - 1, Math.floor((nMin - k) / m) + 1) : nMaj - 1;
+            double p = 0;
+            for (int i = top - 1; i > iStart; i--) {           // a window's halo cuts the line below its top
+                p += steps[rowOf(i, lineRow(k, i))];
+            }
+            walk.top[q] = top;
+            walk.pos[q] = p;
+            if (edgeHalf && top == nMaj - 1) {
+                double ze = edgeSample(k);
+                double pz = 0.0 - 0.5 * steps[rowOf(nMaj - 1, lineRow(k, nMaj - 1))];
+                for (int e = 0; e < n; e++) {
+                    walk.oneUp[q * n + e] = ze == ze ? ze + tans[e] * pz : Double.NEGATIVE_INFINITY;
+                }
+            }
+        }
+        double[] h = walk.h;
+        CellWindow win = w.win;
+        int outStrideJ = rj * win.width() + cj;
+        int sj = strideJ;
+        for (int i = iStart; i >= iEnd; i--) {
+            int pfi = pf[i];
+            double fr = pr[i];
+            int qa = Math.max(0, -kFrom - pfi);
+            int qb = Math.min(lines - 1, cellHi - 1 - kFrom - pfi);
+            int near = kFrom + pfi + (fr >= 0.5 ? 1 : 0);    // lineRow(kFrom + q, i) = clamp(near + q)
+            boolean xMajor = f.xMajor;
+            double rowStep = xMajor ? Double.NaN : steps[r0 + ri * i];
+            int before = Math.min(qa, lines);
+            for (int q = 0; q < before; q++) {
+                double st = xMajor ? steps[r0 + rj * Math.max(0, Math.min(nMin - 1, near + q))] : rowStep;
+                walk.advance(q, i, lineSample(kFrom + q, i), st);
+            }
+            if (qa <= qb) {
+                int at = baseI[i] + sj * (kFrom + qa + pfi);
+                double za = v[at];
+                for (int q = qa, qEnd = qb + 1; q < qEnd; q++) {
+                    at += sj;
+                    double zb = v[at];
+                    double zq = fr == 0 ? za : za == za && zb == zb ? za + (zb - za) * fr : za == za ? za : zb;
+                    walk.advance(q, i, zq, xMajor ? steps[r0 + rj * (near + q)] : rowStep);
+                    za = zb;
+                }
+            }
+            for (int q = Math.max(qb + 1, before); q < lines; q++) {
+                double st = xMajor ? steps[r0 + rj * Math.max(0, Math.min(nMin - 1, near + q))] : rowStep;
+                walk.advance(q, i, lineSample(kFrom + q, i), st);
+            }
+            if (i > w.wi1) {
+                continue;
+            }
+            int c = fr > 0 ? 1 : 0;
+            double phi = fr > 0 ? 1 - fr : 0;
+            int off = kFrom + pfi + c;
+            int q0 = Math.max(0, w.wj0 - off);
+            int q1 = Math.min(lines - 2, w.wj1 - off);
+            if (q0 > q1) {
+                continue;
+            }
+            int outBase = (r0 + ri * i - win.row()) * win.width() + (c0 + ci * i - win.col());
+            boolean inner = i + 1 < nMaj;
+            int up = inner ? baseI[i + 1] : 0;
+            int base = baseI[i];
+            for (int q = q0, qEnd = q1 + 1; q < qEnd; q++) {
+                int j = off + q;
+                int cell = base + sj * j;
+                double z0 = v[cell];
+                int blocked = 0;
+                if (z0 == z0) {
+                    int row = rowOf(i, j);
+                    double step = steps[row];
+                    boolean edge = j >= jTraced;
+                    for (int e = 0; e < n; e++) {
+                        double tan = tans[e];
+                        double floor = lowestTerrain - ShadowHalo.FLOOR_STEPS * step * tan;
+                        boolean lineShadow = edge ? rayBlockedToEdge(i, j, z0, tan)
+                                : between(h[q * n + e], h[(q + 1) * n + e], phi, floor) > z0;
+                        if (lineShadow || firstStepBlocked(i, j, cell, z0, inner, up, step * tan, tFirst, tan)) {
+                            blocked |= 1 << e;
+                        }
+                    }
+                }
+                bits[outBase + outStrideJ * j] = blocked;
+            }
+        }
+    }
+
+    /** {@link VaryingWalk} with one running maximum per elevation: line q, elevation e at q·n + e. */
+    private static final class VaryingLevels {
+        final double[] best;
+        final double[] twoUp;
+        final double[] oneUp;
+        final double[] h;
+        final double[] pos;
+        final int[] top;
+        final double[] tans;
+
+        VaryingLevels(int lines, double[] tans) {
+            int n = tans.length;
+            best = new double[lines * n];
+            twoUp = new double[lines * n];
+            oneUp = new double[lines * n];
+            h = new double[lines * n];
+            pos = new double[lines];
+            top = new int[lines];
+            this.tans = tans;
+            java.util.Arrays.fill(best, Double.NEGATIVE_INFINITY);
+            java.util.Arrays.fill(twoUp, Double.NEGATIVE_INFINITY);
+            java.util.Arrays.fill(oneUp, Double.NEGATIVE_INFINITY);
+        }
+
+        /** {@link VaryingWalk#advance} of line q for every elevation. */
+        void advance(int q, int i, double z, double step) {
+            int t = top[q];
+            if (i < t) {
+                pos[q] += step;
+            }
+            double p = pos[q];
+            boolean sample = i <= t && z == z;
+            int n = tans.length;
+            for (int e = 0, at = q * n; e < n; e++, at++) {
+                double tan = tans[e];
+                double b = best[at];
+                double joining = twoUp[at];
+                if (joining > b) {
+                    b = joining;
+                }
+                best[at] = b;
+                h[at] = b - tan * p;
+                twoUp[at] = oneUp[at];
+                oneUp[at] = sample ? z + tan * p : Double.NEGATIVE_INFINITY;
             }
         }
     }
