@@ -941,7 +941,9 @@ final class SunSweep {
 
     /**
      * {@link #bandsLevels} on a grid whose step length changes from row to row: {@link #bandsVaryingHard}'s walk with
-     * one running maximum per elevation (the distance P along each line is the same for all of them).
+     * one running maximum per elevation (the distance P along each line is the same for all of them). The line walk
+     * repeats {@link #bandsVaryingHard}'s on purpose: shared through methods and an interface for the two kinds of
+     * line state, it cost the single-elevation walk 12–22 % (JMH, three alternating pairs).
      */
     private void bandsLevelsVarying(Window w, int kFrom, int kTo, double[] tans, int[] bits) {
         int lines = kTo - kFrom + 2;
