@@ -7,7 +7,8 @@ import picocli.CommandLine.Option;
 public final class ExecutionOptions {
 
     @Option(names = "--threads", paramLabel = "N",
-            description = "Worker threads (default: all ${sys:jdem846.cpus:-available} processors).")
+            description = "Worker threads, also for compressing the output (default: all "
+                    + "${sys:jdem846.cpus:-available} processors).")
     Integer threads;
 
     @Option(names = "--tile-size", paramLabel = "CELLS",
@@ -17,7 +18,11 @@ public final class ExecutionOptions {
 
     /** The settings these options describe. */
     RenderSettings settings() {
-        int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
-        return new RenderSettings(n, tileSize);
+        return new RenderSettings(threads(), tileSize);
+    }
+
+    /** The worker threads: {@code --threads}, or all processors. */
+    int threads() {
+        return threads != null ? threads : Runtime.getRuntime().availableProcessors();
     }
 }

@@ -73,7 +73,7 @@ public final class HillshadeCommand implements Callable<Integer> {
                     loaded.area(), progress);
         }
         times.lap("hillshade");
-        output.writeGray(gray, CommandSupport.outputGeometry(loaded), 0.0, err);
+        output.writeGray(gray, CommandSupport.outputGeometry(loaded), 0.0, execution, err);
         times.lap("write");
         times.print(verbose.isVerbose(), err);
         return 0;

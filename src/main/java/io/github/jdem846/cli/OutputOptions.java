@@ -26,23 +26,27 @@ public final class OutputOptions {
     @Option(names = {"-q", "--quiet"}, description = "No progress bar.")
     boolean quiet;
 
-    private WriteOptions options(Double noData) {
+    /** The write options these flags describe; {@code execution} decides whether compression may use all cores. */
+    WriteOptions options(Double noData, ExecutionOptions execution) {
         WriteOptions o = WriteOptions.defaults()
-                .withSidecars(worldFile ? WriteOptions.Sidecars.ALWAYS : WriteOptions.Sidecars.NONE);
+                .withSidecars(worldFile ? WriteOptions.Sidecars.ALWAYS : WriteOptions.Sidecars.NONE)
+                .withParallelCompression(execution.threads() > 1);
         return noData == null ? o : o.withNoData(noData);
     }
 
-    /** Writes RGBA pixels covering {@code geometry}. */
-    void writeRgba(int[] argb, GridGeometry geometry, PrintWriter err) throws IOException {
+    /** Writes RGBA pixels covering {@code geometry}, compressing on as many threads as {@code execution} allows. */
+    void writeRgba(int[] argb, GridGeometry geometry, ExecutionOptions execution, PrintWriter err)
+            throws IOException {
         WriteResult r = ImageOutput.writeRgba(output, argb, geometry.width(), geometry.height(),
-                GeoReference.of(geometry), options(null));
+                GeoReference.of(geometry), options(null, execution));
         report(r, err);
     }
 
     /** Writes a gray image covering {@code geometry}, with {@code noData} (or null) as the GeoTIFF no-data. */
-    void writeGray(byte[] gray, GridGeometry geometry, Double noData, PrintWriter err) throws IOException {
+    void writeGray(byte[] gray, GridGeometry geometry, Double noData, ExecutionOptions execution, PrintWriter err)
+            throws IOException {
         WriteResult r = ImageOutput.writeGray(output, gray, geometry.width(), geometry.height(),
-                GeoReference.of(geometry), options(noData));
+                GeoReference.of(geometry), options(noData, execution));
         report(r, err);
     }
 

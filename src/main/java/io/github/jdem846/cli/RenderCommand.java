@@ -100,7 +100,7 @@ public final class RenderCommand implements Callable<Integer> {
             image = new Renderer(execution.settings()).render(loaded.dem(), scene, loaded.area(), progress);
         }
         times.lap("render");
-        output.writeRgba(image.argb(), CommandSupport.outputGeometry(loaded), err);
+        output.writeRgba(image.argb(), CommandSupport.outputGeometry(loaded), execution, err);
         times.lap("write");
         times.print(verbose.isVerbose(), err);
         return 0;

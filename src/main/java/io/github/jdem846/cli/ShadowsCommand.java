@@ -82,7 +82,7 @@ public final class ShadowsCommand implements Callable<Integer> {
         for (int i = 0; i < mask.length; i++) {
             bytes[i] = (byte) Math.round(Clamp.between(mask[i], 0f, 1f) * 255f);
         }
-        output.writeGray(bytes, CommandSupport.outputGeometry(loaded), null, err);
+        output.writeGray(bytes, CommandSupport.outputGeometry(loaded), null, execution, err);
         times.lap("write");
         times.print(verbose.isVerbose(), err);
         return 0;

@@ -55,7 +55,7 @@ public final class TintCommand implements Callable<Integer> {
         RenderedImage image = new Renderer(execution.settings()).render(loaded.dem(),
                 scene.withTintRange(loaded.fileStatistics()), loaded.area(), RenderProgress.NONE);
         times.lap("tint");
-        output.writeRgba(image.argb(), CommandSupport.outputGeometry(loaded), err);
+        output.writeRgba(image.argb(), CommandSupport.outputGeometry(loaded), execution, err);
         times.lap("write");
         times.print(verbose.isVerbose(), err);
         return 0;

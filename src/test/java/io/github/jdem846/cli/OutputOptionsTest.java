@@ -1,0 +1,39 @@
+package io.github.jdem846.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.github.jdem846.output.WriteOptions;
+import org.junit.jupiter.api.Test;
+
+/** How the output flags and {@code --threads} become {@link WriteOptions}. */
+class OutputOptionsTest {
+
+    private static ExecutionOptions threads(Integer n) {
+        ExecutionOptions e = new ExecutionOptions();
+        e.threads = n;
+        return e;
+    }
+
+    @Test
+    void oneWorkerThreadAlsoCompressesTheOutputOnOneThread() {
+        OutputOptions out = new OutputOptions();
+        assertFalse(out.options(null, threads(1)).parallelCompression(), "--threads 1: PNG and GeoTIFF on one thread");
+        assertTrue(out.options(null, threads(4)).parallelCompression(), "--threads 4");
+        assertEquals(Runtime.getRuntime().availableProcessors() > 1,
+                out.options(null, threads(null)).parallelCompression(), "default: all processors");
+    }
+
+    @Test
+    void worldFileAndNoDataFlagsCarryOver() {
+        OutputOptions out = new OutputOptions();
+        assertEquals(WriteOptions.Sidecars.NONE, out.options(null, threads(2)).sidecars());
+        assertNull(out.options(null, threads(2)).noData());
+        out.worldFile = true;
+        WriteOptions o = out.options(0.0, threads(2));
+        assertEquals(WriteOptions.Sidecars.ALWAYS, o.sidecars());
+        assertEquals(0.0, o.noData());
+    }
+}
