@@ -940,6 +940,32 @@ final class SunSweep {
     }
 
     /**
+     * Starts the lines kFrom … kFrom + top.length − 1 of a lat/lon lockstep walk at major index iStart: each line's
+     * top on the whole grid (P = 0 there) and P at iStart, summed as {@link #walkLine} sums it. Returns per line q the
+     * file's upstream outer edge sample, half a step beyond the top, at [2q] (NaN = none) and its P at [2q + 1]: it
+     * joins the running maximum as a sample at i + 2.
+     */
+    private double[] startVaryingLines(int kFrom, int iStart, int[] top, double[] pos) {
+        double[] steps = f.metresPerStep;
+        boolean edgeHalf = iStart == nMaj - 1 && upstreamEdgeSample;
+        double[] edge = new double[2 * top.length];
+        for (int q = 0; q < top.length; q++) {
+            int k = kFrom + q;
+            int t = m > 0 ? (int) Math.min(nMaj - 1, Math.floor((nMin - k) / m) + 1) : nMaj - 1;
+            double p = 0;
+            for (int i = t - 1; i > iStart; i--) {           // a window's halo cuts the line below its top
+                p += steps[rowOf(i, lineRow(k, i))];
+            }
+            top[q] = t;
+            pos[q] = p;
+            boolean half = edgeHalf && t == nMaj - 1;
+            edge[2 * q] = half ? edgeSample(k) : Double.NaN;
+            edge[2 * q + 1] = half ? 0.0 - 0.5 * steps[rowOf(nMaj - 1, lineRow(k, nMaj - 1))] : 0;
+        }
+        return edge;
+    }
+
+    /**
      * {@link #bandsLevels} on a grid whose step length changes from row to row: {@link #bandsVaryingHard}'s walk with
      * one running maximum per elevation (the distance P along each line is the same for all of them). The line walk
      * repeats {@link #bandsVaryingHard}'s on purpose: shared through methods and an interface for the two kinds of
@@ -957,22 +983,11 @@ final class SunSweep {
         int iStart = range[0];
         int iEnd = range[1];
         VaryingLevels walk = new VaryingLevels(lines, tans);
-        boolean edgeHalf = iStart == nMaj - 1 && upstreamEdgeSample;
+        double[] upstreamEdge = startVaryingLines(kFrom, iStart, walk.top, walk.pos);
         for (int q = 0; q < lines; q++) {
-            int k = kFrom + q;
-            int top = m > 0 ? (int) Math.min(nMaj - 1, Math.floor((nMin - k) / m) + 1) : nMaj - 1;
-            double p = 0;
-            for (int i = top - 1; i > iStart; i--) {           // a window's halo cuts the line below its top
-                p += steps[rowOf(i, lineRow(k, i))];
-            }
-            walk.top[q] = top;
-            walk.pos[q] = p;
-            if (edgeHalf && top == nMaj - 1) {
-                double ze = edgeSample(k);
-                double pz = 0.0 - 0.5 * steps[rowOf(nMaj - 1, lineRow(k, nMaj - 1))];
-                for (int e = 0; e < n; e++) {
-                    walk.oneUp[q * n + e] = ze == ze ? ze + tans[e] * pz : Double.NEGATIVE_INFINITY;
-                }
+            double ze = upstreamEdge[2 * q];
+            for (int e = 0; ze == ze && e < n; e++) {
+                walk.oneUp[q * n + e] = ze + tans[e] * upstreamEdge[2 * q + 1];
             }
         }
         double[] h = walk.h;
@@ -1126,21 +1141,11 @@ final class SunSweep {
         int iStart = range[0];
         int iEnd = range[1];
         VaryingWalk walk = new VaryingWalk(lines, tan);
-        boolean edgeHalf = iStart == nMaj - 1 && upstreamEdgeSample;
+        double[] upstreamEdge = startVaryingLines(kFrom, iStart, walk.top, walk.pos);
         for (int q = 0; q < lines; q++) {
-            int k = kFrom + q;
-            int top = m > 0 ? (int) Math.min(nMaj - 1, Math.floor((nMin - k) / m) + 1) : nMaj - 1;
-            double p = 0;
-            for (int i = top - 1; i > iStart; i--) {           // a window's halo cuts the line below its top
-                p += steps[rowOf(i, lineRow(k, i))];
-            }
-            walk.top[q] = top;
-            walk.pos[q] = p;
-            if (edgeHalf && top == nMaj - 1) {
-                // the file's upstream outer edge, half a step beyond the line's top: joins as a sample at i + 2
-                double ze = edgeSample(k);
-                walk.oneUp[q] = ze == ze ? ze + tan * (0.0 - 0.5 * steps[rowOf(nMaj - 1, lineRow(k, nMaj - 1))])
-                        : Double.NEGATIVE_INFINITY;
+            double ze = upstreamEdge[2 * q];
+            if (ze == ze) {
+                walk.oneUp[q] = ze + tan * upstreamEdge[2 * q + 1];
             }
         }
         double[] h = walk.h;
