@@ -57,6 +57,7 @@ public final class HillshadeCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
+        output.refuseOverwriting(input);
         PhaseTimes times = new PhaseTimes();
         HillshadeMethod m = multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : HillshadeMethod.fromName(method);
         HillshadeOptions options = shading.options();

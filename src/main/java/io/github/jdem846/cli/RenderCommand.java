@@ -70,6 +70,7 @@ public final class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
+        output.refuseOverwriting(input);
         PhaseTimes times = new PhaseTimes();
         HillshadeMethod method = hillshade.toLowerCase(Locale.ROOT).equals("none") ? null
                 : HillshadeMethod.fromName(hillshade);

@@ -54,6 +54,7 @@ public final class ShadowsCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
+        output.refuseOverwriting(input);
         PhaseTimes times = new PhaseTimes();
         ShadowAlgorithm alg = ShadowAlgorithm.parse(algorithm);
         if (alg == ShadowAlgorithm.NONE) {

@@ -44,6 +44,7 @@ public final class TintCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
+        output.refuseOverwriting(input);
         PhaseTimes times = new PhaseTimes();
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(null);
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem, scene),

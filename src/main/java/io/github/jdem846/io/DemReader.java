@@ -171,6 +171,17 @@ public final class DemReader {
         return b == 0 ? a : gcd(b, a % b);
     }
 
+    /**
+     * The existing files a read of {@code file} opens: the data file first, then its header and {@code .prj} for
+     * the ESRI formats. An output must not be written over any of them; see
+     * {@link io.github.jdem846.output.InputProtection}.
+     *
+     * @throws DemFormatException when {@code file} is missing or not a DEM this program reads
+     */
+    public static java.util.List<Path> filesOf(Path file) throws IOException {
+        return InputFiles.of(Objects.requireNonNull(file, "file"));
+    }
+
     /** Reads the header only: format, size, data type, georeferencing, CRS and declared no-data. */
     public static DemInfo inspect(Path file) throws IOException {
         try (RasterSource source = open(file)) {

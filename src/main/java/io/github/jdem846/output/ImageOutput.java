@@ -122,14 +122,36 @@ public final class ImageOutput {
         return image.resolveSibling(image.getFileName() + ".aux.xml");
     }
 
+    /**
+     * Every file a write of {@code file} with {@code options} may create, replace or delete: the image, then the
+     * world file, {@code .prj} and {@code .aux.xml} when sidecars are due (they are also deleted as stale when the
+     * image has no georeferencing or no known CRS). {@link InputProtection} checks them against the input's files
+     * before any work.
+     *
+     * @throws IllegalArgumentException for an unsupported extension
+     */
+    public static List<Path> filesWritten(Path file, WriteOptions options) {
+        Objects.requireNonNull(file, "file");
+        Objects.requireNonNull(options, "options");
+        ImageFormat format = ImageFormat.of(file);
+        if (!sidecarsDue(format, options)) {
+            return List.of(file);
+        }
+        return List.of(file, worldFilePath(file, options.worldFileNaming()), prjPath(file), auxXmlPath(file));
+    }
+
+    private static boolean sidecarsDue(ImageFormat format, WriteOptions options) {
+        return options.sidecars() == WriteOptions.Sidecars.ALWAYS
+                || (options.sidecars() == WriteOptions.Sidecars.WHEN_NOT_EMBEDDED && format == ImageFormat.PNG);
+    }
+
     private static WriteResult write(Path file, Pixels image, GeoReference geo, WriteOptions options,
                                      Double noData) throws IOException {
         Objects.requireNonNull(file, "file");
         Objects.requireNonNull(options, "options");
         ImageFormat format = ImageFormat.of(file);
         List<String> notices = new ArrayList<>();
-        boolean sidecarsDue = options.sidecars() == WriteOptions.Sidecars.ALWAYS
-                || (options.sidecars() == WriteOptions.Sidecars.WHEN_NOT_EMBEDDED && format == ImageFormat.PNG);
+        boolean sidecarsDue = sidecarsDue(format, options);
         Path worldFile = sidecarsDue ? worldFilePath(file, options.worldFileNaming()) : null;
         Path prjFile = sidecarsDue ? prjPath(file) : null;
         Path auxFile = sidecarsDue ? auxXmlPath(file) : null;

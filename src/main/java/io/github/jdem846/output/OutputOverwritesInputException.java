@@ -1,0 +1,45 @@
+package io.github.jdem846.output;
+
+import java.io.IOException;
+import java.nio.file.Path;
+
+/**
+ * An output file that is one of the input's files: writing it would destroy the input. Thrown by
+ * {@link InputProtection} before any work; the CLI reports it as bad usage (exit status 2).
+ */
+public final class OutputOverwritesInputException extends IOException {
+
+    private static final long serialVersionUID = 1L;
+
+    private final transient Path output;
+    private final transient Path input;
+
+    /**
+     * @param output the file that would be written
+     * @param input  the input file it is
+     * @param image  the image whose sidecar {@code output} is, or {@code null} when {@code output} is the image
+     */
+    OutputOverwritesInputException(Path output, Path input, Path image) {
+        super(message(output, input, image));
+        this.output = output;
+        this.input = input;
+    }
+
+    private static String message(Path output, Path input, Path image) {
+        String what = image == null ? "cannot write " + output
+                : "cannot write " + output + " (a sidecar of " + image + ")";
+        String which = output.equals(input) ? "it is the input file itself"
+                : "it is the input file " + input + " (the same file)";
+        return what + ": " + which + ", which would be lost; choose another output name";
+    }
+
+    /** The output file that was refused. */
+    public Path output() {
+        return output;
+    }
+
+    /** The input file it would have replaced. */
+    public Path input() {
+        return input;
+    }
+}
