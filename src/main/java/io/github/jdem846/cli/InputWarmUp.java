@@ -28,13 +28,19 @@ final class InputWarmUp {
     /** Starts the warm-up thread for the command line {@code args} and returns at once. */
     static void start(String[] args) {
         String[] copy = args.clone();
-        Thread t = new Thread(() -> run(copy), "jdem846-input-warm-up");
-        t.setDaemon(true);
-        t.start();
+        WarmUpThread.start("jdem846-input-warm-up", () -> run(copy));
     }
 
     /** Time the reader warm-up may take: about picocli's start-up, after which the command reads for itself. */
     private static final long READ_WARM_UP_NANOS = 250_000_000L;
+
+    /**
+     * Heap the reader warm-up may take: 64 MiB, less on small heaps. A file whose first rows need more (one huge
+     * strip) is not warmed up: the reader refuses the read before it allocates ({@link ReadRequest#memoryLimit()}).
+     */
+    static long warmUpMemoryLimit() {
+        return Math.min(64L << 20, Runtime.getRuntime().maxMemory() / 16);
+    }
 
     private static void run(String[] args) {
         try {
@@ -53,18 +59,25 @@ final class InputWarmUp {
     /**
      * Reads the file's first rows a few times, so that the decoder's classes are loaded and its loops on their way
      * to compiled code before the command's own read (a cold 4000² Deflate read took 0.83 s, 0.62 s after one such
-     * read, 0.46 s after twenty; docs/performance.md). At most an eighth of the file and {@link
-     * #READ_WARM_UP_NANOS} of time, on the core picocli's start-up leaves idle.
+     * read, 0.46 s after twenty; docs/performance.md). At most an eighth of the file, {@link
+     * #READ_WARM_UP_NANOS} of time and {@link #warmUpMemoryLimit()} of heap, on the core picocli's start-up leaves
+     * idle.
      */
     private static void warmUpReader(DemInfo info) throws IOException {
         Path dem = Path.of(info.source());
-        int w = Math.min(info.width(), 512);
-        int h = (int) Math.max(1, Math.min(256, (long) info.width() * info.height() / 8 / w));
-        ReadRequest firstRows = ReadRequest.of(Window.cells(0, 0, w, Math.min(h, info.height())));
+        ReadRequest firstRows = firstRows(info);
         long start = System.nanoTime();
         do {
             DemReader.read(dem, firstRows);
         } while (System.nanoTime() - start < READ_WARM_UP_NANOS);
+    }
+
+    /** What the warm-up reads: up to 512 × 256 cells at the top left, within {@link #warmUpMemoryLimit()}. */
+    static ReadRequest firstRows(DemInfo info) {
+        int w = Math.min(info.width(), 512);
+        int h = (int) Math.max(1, Math.min(256, (long) info.width() * info.height() / 8 / w));
+        return ReadRequest.of(Window.cells(0, 0, w, Math.min(h, info.height())))
+                .withMemoryLimit(warmUpMemoryLimit());
     }
 
     /**

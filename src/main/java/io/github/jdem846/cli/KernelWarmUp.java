@@ -29,11 +29,8 @@ final class KernelWarmUp {
     }
 
     private final AtomicBoolean stopped = new AtomicBoolean();
-    private final Thread thread;
 
-    private KernelWarmUp(Stage stage, Path input) {
-        thread = new Thread(() -> run(stage, input), "jdem846-kernel-warm-up");
-        thread.setDaemon(true);
+    private KernelWarmUp() {
     }
 
     /**
@@ -41,8 +38,8 @@ final class KernelWarmUp {
      * returns at once.
      */
     static KernelWarmUp start(Stage stage, Path input) {
-        KernelWarmUp warmUp = new KernelWarmUp(stage, input);
-        warmUp.thread.start();
+        KernelWarmUp warmUp = new KernelWarmUp();
+        WarmUpThread.start("jdem846-kernel-warm-up", () -> warmUp.run(stage, input));
         return warmUp;
     }
 

@@ -23,10 +23,13 @@ final class BlockReader {
     private BlockReader() {
     }
 
-    /** Bytes of the band buffer {@link #read} allocates for this window (float32). */
+    /**
+     * Bytes {@link #read} takes for this window beyond its output: the float32 band buffer and what the source
+     * decodes at once ({@link RasterSource#blockBytes}).
+     */
     static long bandBytes(RasterSource source, Window.Cells window, int d) {
         return 4L * window.width() * bandRows(source.naturalRowBlock(), d, window.width(), window.height(),
-                source.bandCells());
+                source.bandCells()) + source.blockBytes();
     }
 
     /** Output width of a window of {@code w} columns at decimation {@code d}. */

@@ -68,7 +68,7 @@ public final class DemReader {
             int outW = BlockReader.outputSize(cells.width(), d);
             int outH = BlockReader.outputSize(cells.height(), d);
             long bandBytes = BlockReader.bandBytes(source, cells, d);
-            MemoryGuard.requireFits(file, outW, outH, bandBytes, "read a window or a"
+            MemoryGuard.requireFits(file, outW, outH, bandBytes, request.memoryLimit(), "read a window or a"
                     + " decimated version, or give Java more heap with -Xmx");
             float[] values = new float[outW * outH];
             double noData = info.noDataOrNaN();
@@ -202,6 +202,9 @@ public final class DemReader {
         try (RasterSource source = open(file)) {
             DemInfo info = source.info();
             double noData = info.noDataOrNaN();
+            Window.Cells all = new Window.Cells(0, 0, info.width(), info.height());
+            MemoryGuard.requireFits(file, 0, 0, BlockReader.bandBytes(source, all, 1), "give Java more heap"
+                    + " with -Xmx");
             return readInParts(file, source, new Window.Cells(0, 0, info.width(), info.height()), 1, parallelism,
                     minCellsPerPart, (src, part, outRow0) -> BlockReader.read(src, part, 1, noData,
                             (row, v) -> { }));

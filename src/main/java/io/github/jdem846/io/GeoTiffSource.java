@@ -47,9 +47,11 @@ final class GeoTiffSource implements RasterSource {
     private final TiffSubset.Layout layout; // null: no subsetting, use source regions
     private final FileChannel channel;
     private final ValueScale valueScale;
+    private final long blockBytes;
 
     private GeoTiffSource(Path file, ImageInputStream stream, ImageReader reader, DemInfo info, int rowBlock,
-                          boolean tiled, TiffSubset.Layout layout, FileChannel channel, ValueScale valueScale) {
+                          boolean tiled, TiffSubset.Layout layout, FileChannel channel, ValueScale valueScale,
+                          long blockBytes) {
         this.file = file;
         this.stream = stream;
         this.reader = reader;
@@ -59,6 +61,7 @@ final class GeoTiffSource implements RasterSource {
         this.layout = layout;
         this.channel = channel;
         this.valueScale = valueScale;
+        this.blockBytes = blockBytes;
     }
 
     static RasterSource open(Path tif) throws IOException {
@@ -92,7 +95,8 @@ final class GeoTiffSource implements RasterSource {
             DemInfo info = new DemInfo(tif.toString(), DemFormat.GEOTIFF, type, bands, geometry, noData, notices);
             FileChannel channel = FileChannel.open(tif, StandardOpenOption.READ);
             TiffSubset.Layout layout = layoutOf(fields, width, height, tiled, rowBlock, byteOrder(channel));
-            return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled, layout, channel, valueScale);
+            return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled, layout, channel, valueScale,
+                    blockBytes(fields, width, tiled, rowBlock));
         } catch (DemFormatException e) {
             closeQuietly(reader, stream);
             throw e;
@@ -129,6 +133,26 @@ final class GeoTiffSource implements RasterSource {
     @Override
     public DemInfo info() {
         return info;
+    }
+
+    /** One strip or tile, all its samples, twice: as stored (at most as large, uncompressed) and decoded. */
+    @Override
+    public long blockBytes() {
+        return blockBytes;
+    }
+
+    private static long blockBytes(TiffFields fields, int width, boolean tiled, int rowBlock) {
+        long across = tiled ? Math.max(1, fields.intValue(TiffFields.TILE_WIDTH, width)) : width;
+        long bitsPerPixel = 0;
+        for (long bits : fields.has(TiffFields.BITS_PER_SAMPLE) ? fields.longs(TiffFields.BITS_PER_SAMPLE)
+                : new long[] {1}) {
+            bitsPerPixel += Math.max(0, Math.min(bits, 64));
+        }
+        int spp = Math.max(1, fields.intValue(TiffFields.SAMPLES_PER_PIXEL, 1));
+        if (fields.has(TiffFields.BITS_PER_SAMPLE) && fields.longs(TiffFields.BITS_PER_SAMPLE).length == 1) {
+            bitsPerPixel *= spp;
+        }
+        return 2 * across * rowBlock * ((bitsPerPixel + 7) / 8);
     }
 
     @Override

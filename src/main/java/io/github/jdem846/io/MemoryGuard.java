@@ -21,8 +21,21 @@ final class MemoryGuard {
      */
     static void requireFits(Path file, int width, int height, long workBytes, String advice)
             throws DemFormatException {
+        requireFits(file, width, height, workBytes, Long.MAX_VALUE, advice);
+    }
+
+    /**
+     * Like {@link #requireFits(Path, int, int, long, String)}, within at most {@code limit} bytes
+     * ({@link ReadRequest#memoryLimit()}) even where the heap has more.
+     */
+    static void requireFits(Path file, int width, int height, long workBytes, long limit, String advice)
+            throws DemFormatException {
         long cells = (long) width * height;
         long bytes = cells * Float.BYTES;
+        if (limit < Long.MAX_VALUE && cells <= MAX_ARRAY && bytes + workBytes > limit) {
+            throw new DemFormatException(file, needs(width, height, bytes, workBytes)
+                    + ", more than the read's limit of " + human(limit));
+        }
         long max = Runtime.getRuntime().maxMemory();
         long available = available();
         if (cells > MAX_ARRAY) {
@@ -31,10 +44,24 @@ final class MemoryGuard {
                     + human(bytes) + " (" + advice + ")");
         }
         if (bytes + workBytes > available) {
-            throw new DemFormatException(file, "a " + width + " × " + height + " grid needs " + human(bytes)
-                    + " as float32, but the Java heap allows at most " + human(max) + " (Runtime.maxMemory()), "
+            throw new DemFormatException(file, needs(width, height, bytes, workBytes)
+                    + ", but the Java heap allows at most " + human(max) + " (Runtime.maxMemory()), "
                     + human(Math.max(0, available)) + " of it free; " + advice);
         }
+    }
+
+    /**
+     * What a read needs, e.g. "a 100 × 100 grid needs 39.1 KiB as float32" or, when the working buffers are the
+     * larger part (a strip or tile decoded whole), "… and 6.0 GiB to decode the strips or tiles it covers".
+     */
+    private static String needs(int width, int height, long bytes, long workBytes) {
+        String grid = width == 0 && height == 0 ? "reading the file" : "a " + width + " × " + height + " grid";
+        String needs = grid + " needs " + (bytes > 0 ? human(bytes) + " as float32" : "");
+        if (workBytes > bytes) {
+            needs += (bytes > 0 ? " and " : "") + human(workBytes) + " to decode the strips or tiles it covers"
+                    + " (each is decoded whole)";
+        }
+        return needs;
     }
 
     /** True when {@code width × height} float32 cells plus {@code workBytes} fit in the heap now available. */

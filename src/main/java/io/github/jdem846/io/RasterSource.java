@@ -38,6 +38,14 @@ interface RasterSource extends Closeable {
     }
 
     /**
+     * Heap bytes one call of {@link #readRows} takes beyond its destination, whatever its size: a strip or tile
+     * that must be decoded whole (stored and decoded). 0 for formats read row by row.
+     */
+    default long blockBytes() {
+        return 0;
+    }
+
+    /**
      * True when disjoint row bands can be read at the same time through separately opened sources, each decoding
      * only its own rows (raw rows; TIFF strips or tiles with subsetting).
      */
