@@ -159,6 +159,26 @@ public final class DemLoader {
         return new Loaded(loaded.info().withDefaultEllipsoid(body), dem, col, row, w, hgt, stats);
     }
 
+    /**
+     * As {@link #load(Path, Window, OutputSize, Halo, boolean, Ellipsoid)} for the bundled sample DEM ({@link
+     * DemReader#SAMPLE_RESOURCE}), copied to a temporary file for the read and deleted after it.
+     */
+    public static Loaded loadSample(Window window, OutputSize size, Halo halo, boolean fileStatistics,
+                                    Ellipsoid body) throws IOException {
+        Path tmp = java.nio.file.Files.createTempFile("jdem846-sample-", ".tif");
+        try {
+            try (java.io.InputStream in = DemReader.class.getResourceAsStream(DemReader.SAMPLE_RESOURCE)) {
+                if (in == null) {
+                    throw new IOException("the bundled sample DEM is missing from the jar");
+                }
+                java.nio.file.Files.copy(in, tmp, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            }
+            return load(tmp, window, size, halo, fileStatistics, body);
+        } finally {
+            java.nio.file.Files.deleteIfExists(tmp);
+        }
+    }
+
     /** {@link FileStatistics} of one file: streamed at most once. */
     private static final class StreamedStatistics implements FileStatistics {
         private final Path file;

@@ -1,0 +1,105 @@
+package io.github.jdem846.job;
+
+import io.github.jdem846.geo.LatLon;
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.light.LightField;
+import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.sun.Observer;
+import io.github.jdem846.sun.SunLightField;
+import io.github.jdem846.sun.TwilightFade;
+import java.time.ZonedDateTime;
+import java.util.Objects;
+
+/**
+ * Where the light comes from: a fixed direction, or the real sun at a date and time seen from the grid's centre
+ * (or from {@code place}, or from every tile), optionally with the original's twilight fade. Immutable.
+ *
+ * @param direction the fixed light, or {@code null} when the sun is given by {@code time}
+ * @param time      the instant, or {@code null} for a fixed light
+ * @param place     with a time: where to compute the sun when the DEM's CRS cannot say, or {@code null}
+ * @param perTile   with a time: a sun for every tile from its own latitude/longitude
+ * @param twilight  with a time: darken the scene from zenith 90° to 108° (the original's twilight fade)
+ */
+public record Sun(LightDirection direction, ZonedDateTime time, LatLon place, boolean perTile, boolean twilight) {
+
+    /** The original's light: azimuth 320°, elevation 25°. */
+    public static final Sun ORIGINAL_DEFAULT = fixed(LightDirection.ORIGINAL_DEFAULT);
+
+    public Sun {
+        if ((direction == null) == (time == null)) {
+            throw new IllegalArgumentException("give either a fixed light direction or a date and time, not both");
+        }
+        if (time == null && (place != null || perTile || twilight)) {
+            throw new IllegalArgumentException("a place, a sun per tile and the twilight fade need a date and time");
+        }
+    }
+
+    /** A fixed light. */
+    public static Sun fixed(LightDirection direction) {
+        return new Sun(Objects.requireNonNull(direction, "direction"), null, null, false, false);
+    }
+
+    /** A fixed light from {@code azimuth} (degrees clockwise from north) and {@code elevation} degrees. */
+    public static Sun fixed(double azimuth, double elevation) {
+        return fixed(new LightDirection(azimuth, elevation));
+    }
+
+    /** The real sun at {@code time}, seen from the centre of the grid. */
+    public static Sun at(ZonedDateTime time) {
+        return new Sun(null, Objects.requireNonNull(time, "time"), null, false, false);
+    }
+
+    /** The same sun seen from {@code where} (for a DEM whose CRS is unknown). */
+    public Sun seenFrom(LatLon where) {
+        return new Sun(direction, time, where, perTile, twilight);
+    }
+
+    /** The same sun, computed for every tile from its own latitude and longitude. */
+    public Sun perTile(boolean value) {
+        return new Sun(direction, time, place, value, twilight);
+    }
+
+    /** The same sun with the original's twilight fade. */
+    public Sun withTwilight(boolean value) {
+        return new Sun(direction, time, place, perTile, value);
+    }
+
+    /** True when the sun is given by date and time. */
+    public boolean byTime() {
+        return time != null;
+    }
+
+    /**
+     * The light over a grid and the darkening of the whole scene.
+     *
+     * @param field the light, uniform or per tile
+     * @param fade  extra darkening in [0, 2] (the twilight fade; 0 in daylight or for a fixed light)
+     * @param sun   the sun by date and time at the grid's centre, or {@code null} for a fixed light
+     */
+    record Lighting(LightField field, double fade, io.github.jdem846.sun.SunPosition sun) {
+    }
+
+    /** The light over {@code grid}, with tiles of {@code tileSize} cells for a sun per tile. */
+    Lighting over(GridGeometry grid, io.github.jdem846.sun.Body body, int tileSize) {
+        if (time == null) {
+            return new Lighting(LightField.uniform(direction), 0, null);
+        }
+        body.requireSunByDateAndTime();
+        SunLightField field = SunLightField.of(grid, time, place, perTile ? tileSize : 0, Observer.SEA_LEVEL);
+        double fade = twilight ? TwilightFade.ORIGINAL.darkening(field.centralSun().zenithDegrees()) : 0;
+        return new Lighting(field, fade, field.centralSun());
+    }
+
+    /**
+     * The light's central direction over {@code grid}, before the grid is read (to size the cast-shadow halo from
+     * the file's header): the sun of the whole file, which differs from a window's by far less than the halo's
+     * margin.
+     */
+    LightDirection centralOver(GridGeometry grid, io.github.jdem846.sun.Body body) {
+        if (time == null) {
+            return direction;
+        }
+        body.requireSunByDateAndTime();
+        return SunLightField.of(grid, time, place, 0, Observer.SEA_LEVEL).central();
+    }
+}
