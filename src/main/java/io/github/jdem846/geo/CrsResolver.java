@@ -132,7 +132,7 @@ public final class CrsResolver {
         return unit != null ? metresPerUnit(unit) : Double.NaN;
     }
 
-    /** The name of an EPSG unit-of-measure code ("metre", "US survey foot"), or "EPSG unit <code>". */
+    /** The name of an EPSG unit-of-measure code ("metre", "US survey foot"), or "EPSG unit {@literal <code>}". */
     public static String linearUnitName(int epsgUnitCode) {
         return switch (epsgUnitCode) {
             case 9001 -> "metre";
