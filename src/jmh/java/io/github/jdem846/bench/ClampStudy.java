@@ -6,7 +6,7 @@ import java.util.Random;
 /**
  * The cost of {@code Math.min}/{@code Math.max} on doubles in a per-cell loop: a bare Horn hillshade over an
  * {@code n × n} float array (no project code), clamped with the {@code Math} forms and with comparisons, a few rounds
- * each in one JVM (docs/performance.md, "Clamps and the Horn window"). Usage: {@code ClampStudy [n] [rounds]}.
+ * each in one JVM; its result is in {@code shade.Clamp}'s comment. Usage: {@code ClampStudy [n] [rounds]}.
  */
 public final class ClampStudy {
 

@@ -11,7 +11,7 @@ import io.github.jdem846.shade.HillshadeOptions;
 
 /**
  * {@code Renderer.hillshadeGray} (kernel, gray bytes, tiles of 256) on the seeded fractal, 8 rounds in one JVM,
- * milliseconds per round (docs/performance.md, "Clamps and the Horn window").
+ * milliseconds per round (docs/performance.md, "Hillshade kernels (JMH)").
  * Usage: {@code HillshadeGrayTiming SIZE THREADS JDEM846|HORN|MULTIDIRECTIONAL}.
  */
 public final class HillshadeGrayTiming {

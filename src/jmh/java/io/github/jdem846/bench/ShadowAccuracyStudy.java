@@ -22,7 +22,7 @@ import java.util.concurrent.ForkJoinPool;
  *      [--elevations 2,5,10,20,45] [--azimuths 0,30,45,100,135,160,200,215,250,280,300,330] \
  *      [--sample 200000] [--seed 846] [--threads 2] [--testdata testdata] [--out docs/accuracy]
  * java -cp target/benchmarks.jar io.github.jdem846.bench.ShadowAccuracyStudy report \
- *      [--in docs/accuracy] [--images docs/images] [--doc docs/accuracy.md]
+ *      [--in docs/accuracy] [--images docs/images] [--doc docs/accuracy/results.md]
  * </pre>
  * {@code measure} writes one CSV per DEM and elevation ({@code OUT/DEM-eELEVATION.csv}), so a long study runs in
  * pieces; {@code --sample 0} compares every valid cell. {@code report} reads every CSV in {@code --in} and writes
@@ -62,7 +62,7 @@ public final class ShadowAccuracyStudy {
         } else {
             AccuracyReport.write(Path.of(opt.getOrDefault("in", "docs/accuracy")),
                     Path.of(opt.getOrDefault("images", "docs/images")),
-                    Path.of(opt.getOrDefault("doc", "docs/accuracy.md")));
+                    Path.of(opt.getOrDefault("doc", "docs/accuracy/results.md")));
         }
     }
 

@@ -3,8 +3,9 @@ package io.github.jdem846.shade;
 /**
  * Clamps for per-cell loops, written with comparisons rather than {@link Math#min}/{@link Math#max} on doubles and
  * floats: HotSpot 17 on x86 compiles those intrinsics to a sequence that made the Horn hillshade loop about 1.4×
- * slower (docs/performance.md, "Clamps"). The results are those of the {@code Math} forms, bit for bit, for the
- * bounds documented on each method (NaN stays NaN).
+ * slower ({@code bench.ClampStudy}, a bare Horn loop over 2048²: 40–47 ns per cell with the {@code Math} forms,
+ * 28.5–34.5 ns with comparisons). The results are those of the {@code Math} forms, bit for bit, for the bounds
+ * documented on each method (NaN stays NaN).
  */
 public final class Clamp {
 
