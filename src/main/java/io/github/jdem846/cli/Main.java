@@ -56,7 +56,9 @@ public final class Main implements Runnable {
                 cl.addSubcommand(e.getKey(), e.getValue().get());
             }
         }
-        cl.setExecutionExceptionHandler(new CliExceptionHandler());
+        CliExceptionHandler handler = new CliExceptionHandler();
+        cl.setExecutionExceptionHandler(handler);
+        cl.setParameterExceptionHandler(handler);
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         return cl;
     }
