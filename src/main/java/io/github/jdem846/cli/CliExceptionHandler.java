@@ -1,5 +1,6 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.render.InsufficientHeapException;
 import java.io.PrintWriter;
 import java.util.List;
 import picocli.CommandLine;
@@ -42,6 +43,9 @@ final class CliExceptionHandler implements CommandLine.IExecutionExceptionHandle
         String message = ex.getMessage();
         if (message == null || message.isBlank()) {
             message = ex.getClass().getSimpleName();
+        }
+        if (ex instanceof InsufficientHeapException) {
+            message += "; " + Main.HEAP_ADVICE;
         }
         err.println("jdem846: " + message);
         if (isVerbose(parseResult)) {

@@ -32,9 +32,13 @@ public final class HillshadeCommand implements Callable<Integer> {
     @Mixin
     OutputOptions output;
 
+    private HillshadeMethod method = HillshadeMethod.JDEM846;
+
     @Option(names = {"--method", "--alg"}, paramLabel = "METHOD", defaultValue = "jdem846",
             description = "jdem846 (the article's, default), horn (gdaldem's default) or multidirectional.")
-    String method;
+    void method(String name) {
+        Usage.check(spec, "--method", () -> method = HillshadeMethod.fromName(name));
+    }
 
     @Option(names = "--multidirectional", description = "Same as --method multidirectional (gdaldem's flag).")
     boolean multidirectional;
@@ -58,12 +62,18 @@ public final class HillshadeCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
         PhaseTimes times = new PhaseTimes();
-        HillshadeMethod m = multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : HillshadeMethod.fromName(method);
+        input.requireConsistent();
+        sun.requireConsistent(input.bodyOptions);
+        HillshadeMethod m = multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : method;
         HillshadeOptions options = shading.options();
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).hillshadeGray(dem, m,
                 options, LightField.uniform(new LightDirection(315, 45)), RenderProgress.NONE), input.file());
-        DemLoader.Loaded loaded = input.load(DemLoader.Halo.uniform(1), false);
-        warmUp.stop();
+        DemLoader.Loaded loaded;
+        try {
+            loaded = input.load(DemLoader.Halo.uniform(1), false, Byte.BYTES);
+        } finally {
+            warmUp.stop();
+        }
         times.lap("read");
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);

@@ -9,7 +9,6 @@ import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import java.io.PrintWriter;
-import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -36,21 +35,42 @@ public final class RenderCommand implements Callable<Integer> {
     @Mixin
     TintOptions tint;
 
+    private HillshadeMethod method = HillshadeMethod.JDEM846;
+
     @Option(names = "--hillshade", paramLabel = "METHOD", defaultValue = "jdem846",
             description = "jdem846 (the article's, default), horn, multidirectional or none.")
-    String hillshade;
+    void hillshade(String name) {
+        if (name.trim().equalsIgnoreCase("none")) {
+            method = null;
+            return;
+        }
+        try {
+            method = HillshadeMethod.fromName(name);
+        } catch (IllegalArgumentException e) {
+            throw Usage.invalid(spec, e.getMessage() + ", or none", "--hillshade");
+        }
+    }
 
     @Mixin
     ShadingOptions shading;
 
+    private ShadowAlgorithm algorithm = ShadowAlgorithm.NONE;
+
     @Option(names = "--shadows", paramLabel = "ALGORITHM", defaultValue = "none",
             description = "Cast shadows: none (default), sweep (fast, O(cells)), march (the article's ray march, "
                     + "fixed) or exact (the slow reference).")
-    String shadows;
+    void shadows(String name) {
+        Usage.check(spec, "--shadows", () -> algorithm = ShadowAlgorithm.parse(name));
+    }
+
+    private double shadowIntensity;
 
     @Option(names = "--shadow-intensity", paramLabel = "0..1", defaultValue = "0.4",
-            description = "A cell in cast shadow loses 2 × this much brightness. Default: ${DEFAULT-VALUE}.")
-    double shadowIntensity;
+            description = "A cell in cast shadow loses 2 × this much brightness, 0 to 1. Default: ${DEFAULT-VALUE}.")
+    void shadowIntensity(double intensity) {
+        Usage.check(spec, "--shadow-intensity", () -> Scene.defaults().withShadowIntensity(intensity));
+        shadowIntensity = intensity;
+    }
 
     @Mixin
     ShadowCliOptions shadowOptions;
@@ -71,9 +91,8 @@ public final class RenderCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
         PhaseTimes times = new PhaseTimes();
-        HillshadeMethod method = hillshade.toLowerCase(Locale.ROOT).equals("none") ? null
-                : HillshadeMethod.fromName(hillshade);
-        ShadowAlgorithm algorithm = ShadowAlgorithm.parse(shadows);
+        input.requireConsistent();
+        sun.requireConsistent(input.bodyOptions);
         shadowOptions.noteUnused(algorithm, err);
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(method)
                 .withHillshadeOptions(shading.options()).withShadows(algorithm)
@@ -86,8 +105,14 @@ public final class RenderCommand implements Callable<Integer> {
         Scene warmUpScene = scene.withLight(new LightDirection(320, 25));
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem,
                 warmUpScene), input.file());
-        DemLoader.Loaded loaded = input.load(halo, scene.tint() != null || scene.hasShadows() && input.hasWindow());
-        warmUp.stop();
+        DemLoader.Loaded loaded;
+        try {
+            // besides the grid: the ARGB picture, and the shadow mask
+            loaded = input.load(halo, scene.tint() != null || scene.hasShadows() && input.hasWindow(),
+                    Integer.BYTES + (scene.hasShadows() ? Float.BYTES : 0));
+        } finally {
+            warmUp.stop();
+        }
         if (scene.hasShadows()) {
             scene = scene.withShadowOptions(CommandSupport.forLoadedGrid(scene.shadowOptions(), loaded));
         }
