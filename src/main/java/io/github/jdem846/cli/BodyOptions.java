@@ -14,21 +14,14 @@ final class BodyOptions {
     @Spec(Spec.Target.MIXEE)
     CommandSpec command;
 
-    private Body named;
-    private Body sphere;
-
-    @Option(names = "--body", paramLabel = "BODY",
+    @Option(names = "--body", paramLabel = "BODY", converter = Converters.BodyName.class,
             description = "The body the DEM lies on when its CRS names no ellipsoid: earth (default, WGS 84), moon "
                     + "or mars. Sun positions from --sun-time are for the Earth only.")
-    void bodyName(String name) {
-        Usage.check(command, "--body", () -> named = Body.named(name));
-    }
+    Body named;
 
-    @Option(names = "--radius", paramLabel = "M",
+    @Option(names = "--radius", paramLabel = "M", converter = Converters.Radius.class,
             description = "Instead of --body: the radius in metres of a spherical body (a finite number above 0).")
-    void radius(double metres) {
-        Usage.check(command, "--radius", () -> sphere = Body.sphere(metres));
-    }
+    Body sphere;
 
     /** The body asked for; the Earth when neither option is given. */
     Body body() {

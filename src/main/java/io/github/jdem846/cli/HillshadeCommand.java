@@ -32,13 +32,10 @@ public final class HillshadeCommand implements Callable<Integer> {
     @Mixin
     OutputOptions output;
 
-    private HillshadeMethod method = HillshadeMethod.JDEM846;
-
     @Option(names = {"--method", "--alg"}, paramLabel = "METHOD", defaultValue = "jdem846",
+            converter = Converters.Method.class,
             description = "jdem846 (the article's, default), horn (gdaldem's default) or multidirectional.")
-    void method(String name) {
-        Usage.check(spec, "--method", () -> method = HillshadeMethod.fromName(name));
-    }
+    HillshadeMethod method;
 
     @Option(names = "--multidirectional", description = "Same as --method multidirectional (gdaldem's flag).")
     boolean multidirectional;

@@ -42,23 +42,14 @@ public final class InfoCommand implements Callable<Integer> {
     @Option(names = "--json", description = "Print one JSON object instead of text.")
     boolean json;
 
-    private String sunTime;
-    private java.time.ZonedDateTime instant;
-    private LatLon sunAt;
-
-    @Option(names = "--sun-time", paramLabel = "TIME",
+    @Option(names = "--sun-time", paramLabel = "TIME", converter = Converters.Time.class,
             description = "Also give the sun at the DEM's centre at this instant (ISO-8601 with offset or zone).")
-    void sunTime(String text) {
-        Usage.check(spec, "--sun-time", () -> instant = ZonedTimeParser.parse(text));
-        sunTime = text;
-    }
+    String sunTime;
 
-    @Option(names = "--sun-at", paramLabel = "LAT,LON",
+    @Option(names = "--sun-at", paramLabel = "LAT,LON", converter = SunCommand.LatLonConverter.class,
             description = "With --sun-time: the place, when the DEM's CRS cannot give the centre's latitude/longitude;"
                     + " latitude -90 to 90, longitude -180 to 180.")
-    void sunAt(String text) {
-        Usage.check(spec, "--sun-at", () -> sunAt = LatLon.parse(text));
-    }
+    LatLon sunAt;
 
     @Mixin
     BodyOptions bodyOptions;
@@ -93,7 +84,7 @@ public final class InfoCommand implements Callable<Integer> {
         info = info.withDefaultEllipsoid(body.ellipsoid());
         SunPosition sun = null;
         if (sunTime != null) {
-            sun = SunLightField.of(info.geometry(), instant, sunAt, 0, Observer.SEA_LEVEL).centralSun();
+            sun = SunLightField.of(info.geometry(), ZonedTimeParser.parse(sunTime), sunAt, 0, Observer.SEA_LEVEL).centralSun();
         }
         InfoReport report = new InfoReport(info, stats, sunTime, sun);
         spec.commandLine().getOut().println(json ? report.toJson() : report.toText());

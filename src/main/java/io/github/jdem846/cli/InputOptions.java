@@ -10,7 +10,6 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
-import java.util.Locale;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -34,59 +33,25 @@ public final class InputOptions {
     @Spec(Spec.Target.MIXEE)
     CommandSpec command;
 
-    private Window window;
-    private Integer width;
-    private Integer height;
-    private Double scale;
-
-    @Option(names = "--window", paramLabel = "W,S,E,N|cells:COL,ROW,W,H",
+    @Option(names = "--window", paramLabel = "W,S,E,N|cells:COL,ROW,W,H", converter = Converters.WindowValue.class,
             description = "Render only this part: a box in the DEM's CRS units (west,south,east,north; west < east, "
                     + "south < north; clipped to the grid) or a cell rectangle 'cells:col,row,width,height' (row 0 = "
                     + "north; inside the grid). Only the window and the halo the stages need are read.")
-    void window(String text) {
-        String t = text.trim();
-        boolean cells = t.toLowerCase(Locale.ROOT).startsWith("cells:");
-        String[] parts = (cells ? t.substring(6) : t).split(",", -1);
-        String expected = "'" + text + "' is not a window: expected WEST,SOUTH,EAST,NORTH in the DEM's CRS units or "
-                + "cells:COL,ROW,WIDTH,HEIGHT";
-        if (parts.length != 4) {
-            throw Usage.invalid(command, expected, "--window");
-        }
-        double[] v = new double[4];
-        try {
-            for (int i = 0; i < 4; i++) {
-                v[i] = cells ? Integer.parseInt(parts[i].trim()) : Double.parseDouble(parts[i].trim());
-            }
-        } catch (NumberFormatException e) {
-            throw Usage.invalid(command, expected, "--window");
-        }
-        Usage.check(command, "--window", () -> window = cells
-                ? Window.cells((int) v[0], (int) v[1], (int) v[2], (int) v[3])
-                : Window.world(v[0], v[1], v[2], v[3]));
-    }
+    Window window;
 
-    @Option(names = "--width", paramLabel = "PIXELS", description = "Output width, 1 to " + OutputSize.MAX_SIDE
-            + " (height follows the aspect ratio unless --height is given too; at most " + OutputSize.MAX_PIXELS
-            + " pixels in all).")
-    void width(int pixels) {
-        Usage.check(command, "--width", () -> OutputSize.width(pixels));
-        width = pixels;
-    }
+    @Option(names = "--width", paramLabel = "PIXELS", converter = Converters.Width.class,
+            description = "Output width, 1 to " + OutputSize.MAX_SIDE + " (height follows the aspect ratio unless "
+                    + "--height is given too; at most " + OutputSize.MAX_PIXELS + " pixels in all).")
+    Integer width;
 
-    @Option(names = "--height", paramLabel = "PIXELS", description = "Output height, 1 to " + OutputSize.MAX_SIDE
-            + ".")
-    void height(int pixels) {
-        Usage.check(command, "--height", () -> OutputSize.height(pixels));
-        height = pixels;
-    }
+    @Option(names = "--height", paramLabel = "PIXELS", converter = Converters.Height.class,
+            description = "Output height, 1 to " + OutputSize.MAX_SIDE + ".")
+    Integer height;
 
-    @Option(names = "--scale", paramLabel = "FACTOR",
+    @Option(names = "--scale", paramLabel = "FACTOR", converter = Converters.Scale.class,
             description = "Output pixels per DEM cell, e.g. 0.25 for a quarter-size picture: above 0, at most "
                     + OutputSize.MAX_SIDE + ", and enough for one pixel on each side.")
-    void scale(double factor) {
-        Usage.check(command, "--scale", () -> OutputSize.scale(factor));
-        scale = factor;
-    }
+    Double scale;
 
     /** The output size these options ask for. */
     OutputSize size() {
@@ -123,11 +88,6 @@ public final class InputOptions {
     /** True when {@code --window} was given. */
     boolean hasWindow() {
         return window != null;
-    }
-
-    /** The window, or {@code null} for the whole grid. */
-    Window window() {
-        return window;
     }
 
     /**

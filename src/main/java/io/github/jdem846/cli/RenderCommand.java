@@ -35,42 +35,24 @@ public final class RenderCommand implements Callable<Integer> {
     @Mixin
     TintOptions tint;
 
-    private HillshadeMethod method = HillshadeMethod.JDEM846;
-
     @Option(names = "--hillshade", paramLabel = "METHOD", defaultValue = "jdem846",
+            converter = Converters.HillshadeOrNone.class,
             description = "jdem846 (the article's, default), horn, multidirectional or none.")
-    void hillshade(String name) {
-        if (name.trim().equalsIgnoreCase("none")) {
-            method = null;
-            return;
-        }
-        try {
-            method = HillshadeMethod.fromName(name);
-        } catch (IllegalArgumentException e) {
-            throw Usage.invalid(spec, e.getMessage() + ", or none", "--hillshade");
-        }
-    }
+    HillshadeMethod method;
 
     @Mixin
     ShadingOptions shading;
 
-    private ShadowAlgorithm algorithm = ShadowAlgorithm.NONE;
-
     @Option(names = "--shadows", paramLabel = "ALGORITHM", defaultValue = "none",
+            converter = Converters.Algorithm.class,
             description = "Cast shadows: none (default), sweep (fast, O(cells)), march (the article's ray march, "
                     + "fixed) or exact (the slow reference).")
-    void shadows(String name) {
-        Usage.check(spec, "--shadows", () -> algorithm = ShadowAlgorithm.parse(name));
-    }
-
-    private double shadowIntensity;
+    ShadowAlgorithm algorithm;
 
     @Option(names = "--shadow-intensity", paramLabel = "0..1", defaultValue = "0.4",
+            converter = Converters.ShadowIntensity.class,
             description = "A cell in cast shadow loses 2 × this much brightness, 0 to 1. Default: ${DEFAULT-VALUE}.")
-    void shadowIntensity(double intensity) {
-        Usage.check(spec, "--shadow-intensity", () -> Scene.defaults().withShadowIntensity(intensity));
-        shadowIntensity = intensity;
-    }
+    double shadowIntensity;
 
     @Mixin
     ShadowCliOptions shadowOptions;

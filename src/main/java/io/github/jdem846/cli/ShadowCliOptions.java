@@ -3,9 +3,7 @@ package io.github.jdem846.cli;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowOptions;
 import java.io.PrintWriter;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Spec;
 
 /** {@code --soft-shadows}, {@code --curvature}, {@code --refraction} and {@code --thin-features}. */
 public final class ShadowCliOptions {
@@ -18,17 +16,9 @@ public final class ShadowCliOptions {
             description = "Account for the Earth's curvature and refraction along the rays (matters beyond ~10 km).")
     boolean curvature;
 
-    @Spec(Spec.Target.MIXEE)
-    CommandSpec command;
-
-    private double refraction;
-
-    @Option(names = "--refraction", paramLabel = "K", defaultValue = "0.13",
+    @Option(names = "--refraction", paramLabel = "K", defaultValue = "0.13", converter = Converters.Refraction.class,
             description = "Refraction coefficient for --curvature, -1 to 1. Default: ${DEFAULT-VALUE}.")
-    void refraction(double k) {
-        Usage.check(command, "--refraction", () -> ShadowOptions.DEFAULTS.withEarthCurvature(true, k, Double.NaN));
-        refraction = k;
-    }
+    double refraction;
 
     @Option(names = "--thin-features",
             description = "sweep: also test each cell's own ray at the steepest terrain of its strip, so that features "

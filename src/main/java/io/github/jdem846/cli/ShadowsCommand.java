@@ -32,16 +32,10 @@ public final class ShadowsCommand implements Callable<Integer> {
     @Mixin
     OutputOptions output;
 
-    private ShadowAlgorithm algorithm = ShadowAlgorithm.SWEEP;
-
     @Option(names = {"--algorithm", "--shadows"}, paramLabel = "ALGORITHM", defaultValue = "sweep",
+            converter = Converters.MaskAlgorithm.class,
             description = "sweep (default, O(cells)), march (the article's ray march, fixed) or exact (reference).")
-    void algorithm(String name) {
-        Usage.check(spec, "--algorithm", () -> algorithm = ShadowAlgorithm.parse(name));
-        if (algorithm == ShadowAlgorithm.NONE) {
-            throw Usage.invalid(spec, "none makes no mask; choose sweep, march or exact", "--algorithm");
-        }
-    }
+    ShadowAlgorithm algorithm;
 
     @Mixin
     ShadowCliOptions shadowOptions;

@@ -50,41 +50,24 @@ public final class SunCommand implements Callable<Integer> {
                     + "or -33.92,18.42.")
     LatLon at;
 
-    private double heightMeters;
-    private Double pressure;
-    private Double temperature;
-    private Double deltaT;
-
-    @Option(names = "--height", paramLabel = "M", defaultValue = "0",
+    @Option(names = "--height", paramLabel = "M", defaultValue = "0", converter = Converters.ObserverHeight.class,
             description = "Height above sea level in metres, -500 to 20000 (default: ${DEFAULT-VALUE}).")
-    void height(double metres) {
-        Usage.check(spec, "--height", () -> Observer.atHeight(metres));
-        heightMeters = metres;
-    }
+    double heightMeters;
 
-    @Option(names = "--pressure", paramLabel = "MBAR",
+    @Option(names = "--pressure", paramLabel = "MBAR", converter = Converters.Pressure.class,
             description = "Mean air pressure in millibars for refraction, above 0 and at most 2000 (default: "
                     + "standard atmosphere at the height, 1013.25 at sea level).")
-    void pressure(double millibars) {
-        Usage.check(spec, "--pressure", () -> Observer.SEA_LEVEL.withPressure(millibars));
-        pressure = millibars;
-    }
+    Double pressure;
 
-    @Option(names = "--temperature", paramLabel = "C",
+    @Option(names = "--temperature", paramLabel = "C", converter = Converters.Temperature.class,
             description = "Mean air temperature in °C for refraction, -100 to 100 (default: standard atmosphere at "
                     + "the height, 15 at sea level).")
-    void temperature(double celsius) {
-        Usage.check(spec, "--temperature", () -> Observer.SEA_LEVEL.withTemperature(celsius));
-        temperature = celsius;
-    }
+    Double temperature;
 
-    @Option(names = "--delta-t", paramLabel = "S",
+    @Option(names = "--delta-t", paramLabel = "S", converter = Converters.DeltaT.class,
             description = "Delta T = TT - UT in seconds, within ±200000 (default: the estimate for the date, about "
                     + "71 s in 2024).")
-    void deltaT(double seconds) {
-        Usage.check(spec, "--delta-t", () -> Observer.SEA_LEVEL.withDeltaT(seconds));
-        deltaT = seconds;
-    }
+    Double deltaT;
 
     @Mixin
     BodyOptions bodyOptions;

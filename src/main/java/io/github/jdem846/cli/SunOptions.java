@@ -10,7 +10,6 @@ import io.github.jdem846.sun.SunLightField;
 import io.github.jdem846.sun.TwilightFade;
 import io.github.jdem846.sun.ZonedTimeParser;
 import java.io.PrintWriter;
-import java.time.ZonedDateTime;
 import java.util.Locale;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -25,42 +24,15 @@ public final class SunOptions {
     @Spec(Spec.Target.MIXEE)
     CommandSpec command;
 
-    private Double azimuth;
-    private Double elevation;
-    private String time;
-    private ZonedDateTime instant;
-    private LatLon place;
-
-    @Option(names = {"--sun-azimuth", "--azimuth"}, paramLabel = "DEG",
-            description = "Sun azimuth, degrees clockwise from north: any finite number, reduced to [0, 360). "
-                    + "Default: 320.")
-    void azimuth(double degrees) {
-        Usage.check(command, "--sun-azimuth", () -> new LightDirection(degrees, 25));
-        azimuth = degrees;
-    }
-
-    @Option(names = {"--sun-elevation", "--altitude"}, paramLabel = "DEG",
-            description = "Sun elevation above the horizon in degrees, -90 to 90 (at 0 or below, cast shadows "
-                    + "cover every cell). Default: 25.")
-    void elevation(double degrees) {
-        Usage.check(command, "--sun-elevation", () -> new LightDirection(320, degrees));
-        elevation = degrees;
-    }
-
-    @Option(names = "--sun-time", paramLabel = "TIME",
+    @Option(names = "--sun-time", paramLabel = "TIME", converter = Converters.Time.class,
             description = "Compute the sun for this instant instead (ISO-8601 with offset or zone, e.g. "
                     + "2024-06-21T05:30+02:00 or 2024-06-21T05:30[Europe/Luxembourg]), seen from the DEM's centre.")
-    void time(String text) {
-        Usage.check(command, "--sun-time", () -> instant = ZonedTimeParser.parse(text));
-        time = text;
-    }
+    String time;
 
-    @Option(names = "--sun-at", paramLabel = "LAT,LON",
+    @Option(names = "--sun-at", paramLabel = "LAT,LON", converter = SunCommand.LatLonConverter.class,
             description = "With --sun-time: the place to compute the sun for, latitude -90 to 90 and longitude -180 "
                     + "to 180 in degrees (needed when the DEM's CRS is unknown).")
-    void place(String text) {
-        Usage.check(command, "--sun-at", () -> place = LatLon.parse(text));
-    }
+    LatLon place;
 
     @Option(names = "--sun-per-tile",
             description = "With --sun-time: recompute the sun for every tile from its own latitude/longitude.")
@@ -70,6 +42,16 @@ public final class SunOptions {
             description = "With --sun-time: the original's twilight fade, darkening the scene linearly from zenith "
                     + "90° to 108° (civil to astronomical twilight).")
     boolean twilight;
+
+    @Option(names = {"--sun-azimuth", "--azimuth"}, paramLabel = "DEG", converter = Converters.Azimuth.class,
+            description = "Sun azimuth, degrees clockwise from north: any finite number, reduced to [0, 360). "
+                    + "Default: 320.")
+    Double azimuth;
+
+    @Option(names = {"--sun-elevation", "--altitude"}, paramLabel = "DEG", converter = Converters.Elevation.class,
+            description = "Sun elevation above the horizon in degrees, -90 to 90 (at 0 or below, cast shadows "
+                    + "cover every cell). Default: 25.")
+    Double elevation;
 
     /**
      * Refuses options that do not go together: a sun by time and by angles, or the sun-by-time options without
@@ -112,7 +94,7 @@ public final class SunOptions {
             return new Lighting(LightField.uniform(fixedLight()), 0);
         }
         body.requireSunByDateAndTime();
-        SunLightField field = SunLightField.of(grid, instant, place, perTile ? tileSize : 0, Observer.SEA_LEVEL);
+        SunLightField field = SunLightField.of(grid, ZonedTimeParser.parse(time), place, perTile ? tileSize : 0, Observer.SEA_LEVEL);
         double fade = twilight ? TwilightFade.ORIGINAL.darkening(field.centralSun().zenithDegrees()) : 0;
         err.println(String.format(Locale.ROOT, "jdem846: sun at %s: azimuth %.2f°, elevation %.2f°%s", time,
                 field.centralSun().azimuthDegrees(), field.centralSun().elevationDegrees(),

@@ -7,15 +7,15 @@ import picocli.CommandLine.ParameterException;
 
 /**
  * Usage errors as picocli {@link ParameterException}s, which {@link CliExceptionHandler} prints as one line with a
- * hint and exit status 2. The ranges themselves are checked by the library classes the options feed; this turns
- * their {@link IllegalArgumentException} into a usage error that names the option.
+ * hint and exit status 2: options that exclude each other, and values that turn out not to fit the grid once its
+ * header is read. (A value out of its own range is refused while parsing, by {@link Converters}.)
  */
 final class Usage {
 
     private Usage() {
     }
 
-    /** Runs {@code check} (a library check of one value); its IllegalArgumentException becomes a usage error. */
+    /** Runs {@code check} (a library check); its IllegalArgumentException becomes a usage error about {@code option}. */
     static void check(CommandSpec spec, String option, Runnable check) {
         try {
             check.run();
