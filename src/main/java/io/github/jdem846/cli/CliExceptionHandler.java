@@ -1,24 +1,47 @@
 package io.github.jdem846.cli;
 
 import io.github.jdem846.output.OutputOverwritesInputException;
+import io.github.jdem846.render.InsufficientHeapException;
 import java.io.PrintWriter;
+import java.util.List;
 import picocli.CommandLine;
 
 /**
- * Turns an exception from a subcommand into one line for a person: {@code jdem846: <message>} and exit status 1,
- * or 2 for bad usage (a parameter error, an output that would overwrite an input).
- * The stack trace is printed only with {@code --verbose} (any subcommand that has a {@link VerboseOption} mixin).
+ * Turns what goes wrong into one line for a person. Bad usage (a {@link CommandLine.ParameterException}: an unknown
+ * option, a missing or malformed value, a value out of its range) prints {@code jdem846: <message>} and a hint to
+ * {@code --help}, exit status 2, never the usage text. An exception from a subcommand prints
+ * {@code jdem846: <message>}, exit status 1; its stack trace only with {@code --verbose} (any subcommand that has a
+ * {@link VerboseOption} mixin). An output that would overwrite an input ({@link OutputOverwritesInputException})
+ * is bad usage too: one line, exit status 2.
  */
-final class CliExceptionHandler implements CommandLine.IExecutionExceptionHandler {
+final class CliExceptionHandler implements CommandLine.IExecutionExceptionHandler,
+        CommandLine.IParameterExceptionHandler {
+
+    /** At most this many "did you mean" suggestions. */
+    private static final int SUGGESTIONS = 3;
+
+    @Override
+    public int handleParseException(CommandLine.ParameterException ex, String[] args) {
+        CommandLine cl = ex.getCommandLine();
+        PrintWriter err = cl.getErr();
+        err.println("jdem846: " + ex.getMessage());
+        String hint = "Try '" + cl.getCommandSpec().qualifiedName() + " --help'.";
+        if (ex instanceof CommandLine.UnmatchedArgumentException unmatched) {
+            List<String> suggestions = unmatched.getSuggestions();
+            if (!suggestions.isEmpty()) {
+                hint = "Did you mean " + String.join(" or ", suggestions.subList(0,
+                        Math.min(SUGGESTIONS, suggestions.size()))) + "? " + hint;
+            }
+        }
+        err.println(hint);
+        err.flush();
+        return cl.getCommandSpec().exitCodeOnInvalidInput();
+    }
 
     @Override
     public int handleExecutionException(Exception ex, CommandLine commandLine,
                                         CommandLine.ParseResult parseResult) {
         PrintWriter err = commandLine.getErr();
-        if (ex instanceof CommandLine.ParameterException pe) {
-            err.println("jdem846: " + pe.getMessage());
-            return 2;
-        }
         if (ex instanceof OutputOverwritesInputException overwrite) {
             err.println("jdem846: " + overwrite.getMessage());
             err.flush();
@@ -27,6 +50,9 @@ final class CliExceptionHandler implements CommandLine.IExecutionExceptionHandle
         String message = ex.getMessage();
         if (message == null || message.isBlank()) {
             message = ex.getClass().getSimpleName();
+        }
+        if (ex instanceof InsufficientHeapException) {
+            message += "; " + Main.HEAP_ADVICE;
         }
         err.println("jdem846: " + message);
         if (isVerbose(parseResult)) {

@@ -6,13 +6,14 @@ import picocli.CommandLine.Option;
 /** {@code --threads} and {@code --tile-size}, shared by the rendering subcommands. */
 public final class ExecutionOptions {
 
-    @Option(names = "--threads", paramLabel = "N",
-            description = "Worker threads, also for compressing the output (default: all "
-                    + "${sys:jdem846.cpus:-available} processors).")
+    @Option(names = "--threads", paramLabel = "N", converter = Converters.Threads.class,
+            description = "Worker threads, also for compressing the output: 1 to " + RenderSettings.MAX_PARALLELISM
+                    + " (default: all ${sys:jdem846.cpus:-available} processors).")
     Integer threads;
 
-    @Option(names = "--tile-size", paramLabel = "CELLS",
-            description = "Tile edge in cells (default: ${DEFAULT-VALUE}); the output does not depend on it.",
+    @Option(names = "--tile-size", paramLabel = "CELLS", converter = Converters.TileSize.class,
+            description = "Tile edge in cells, " + RenderSettings.MIN_TILE_SIZE + " to " + RenderSettings.MAX_TILE_SIZE
+                    + " (default: ${DEFAULT-VALUE}); the output does not depend on it.",
             defaultValue = "" + RenderSettings.DEFAULT_TILE_SIZE)
     int tileSize;
 
@@ -23,6 +24,6 @@ public final class ExecutionOptions {
 
     /** The worker threads: {@code --threads}, or all processors. */
     int threads() {
-        return threads != null ? threads : Runtime.getRuntime().availableProcessors();
+        return threads != null ? threads : RenderSettings.defaults().parallelism();
     }
 }

@@ -33,8 +33,9 @@ public final class HillshadeCommand implements Callable<Integer> {
     OutputOptions output;
 
     @Option(names = {"--method", "--alg"}, paramLabel = "METHOD", defaultValue = "jdem846",
+            converter = Converters.Method.class,
             description = "jdem846 (the article's, default), horn (gdaldem's default) or multidirectional.")
-    String method;
+    HillshadeMethod method;
 
     @Option(names = "--multidirectional", description = "Same as --method multidirectional (gdaldem's flag).")
     boolean multidirectional;
@@ -59,12 +60,18 @@ public final class HillshadeCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         output.refuseOverwriting(input);
         PhaseTimes times = new PhaseTimes();
-        HillshadeMethod m = multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : HillshadeMethod.fromName(method);
+        input.requireConsistent();
+        sun.requireConsistent(input.bodyOptions);
+        HillshadeMethod m = multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : method;
         HillshadeOptions options = shading.options();
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).hillshadeGray(dem, m,
                 options, LightField.uniform(new LightDirection(315, 45)), RenderProgress.NONE), input.file());
-        DemLoader.Loaded loaded = input.load(DemLoader.Halo.uniform(1), false);
-        warmUp.stop();
+        DemLoader.Loaded loaded;
+        try {
+            loaded = input.load(DemLoader.Halo.uniform(1), false, Byte.BYTES);
+        } finally {
+            warmUp.stop();
+        }
         times.lap("read");
         CommandSupport.printNotices(loaded, err);
         SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);

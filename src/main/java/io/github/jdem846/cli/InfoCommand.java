@@ -42,13 +42,14 @@ public final class InfoCommand implements Callable<Integer> {
     @Option(names = "--json", description = "Print one JSON object instead of text.")
     boolean json;
 
-    @Option(names = "--sun-time", paramLabel = "TIME",
+    @Option(names = "--sun-time", paramLabel = "TIME", converter = Converters.Time.class,
             description = "Also give the sun at the DEM's centre at this instant (ISO-8601 with offset or zone).")
     String sunTime;
 
-    @Option(names = "--sun-at", paramLabel = "LAT,LON",
-            description = "With --sun-time: the place, when the DEM's CRS cannot give the centre's latitude/longitude.")
-    String sunAt;
+    @Option(names = "--sun-at", paramLabel = "LAT,LON", converter = SunCommand.LatLonConverter.class,
+            description = "With --sun-time: the place, when the DEM's CRS cannot give the centre's latitude/longitude;"
+                    + " latitude -90 to 90, longitude -180 to 180.")
+    LatLon sunAt;
 
     @Mixin
     BodyOptions bodyOptions;
@@ -61,6 +62,10 @@ public final class InfoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (sunAt != null && sunTime == null) {
+            throw Usage.error(spec, "--sun-at needs --sun-time");
+        }
+        Body body = sunTime != null ? bodyOptions.bodyForSunByTime() : bodyOptions.body();
         DemInfo info;
         ElevationStatistics stats;
         if (file == null) {
@@ -76,16 +81,10 @@ public final class InfoCommand implements Callable<Integer> {
             info = new DemInfo(info.source(), info.format(), info.dataType(), info.bands(),
                     info.geometry().withCrs(crs), info.declaredNoData(), info.notices());
         }
-        Body body = bodyOptions.body();
         info = info.withDefaultEllipsoid(body.ellipsoid());
         SunPosition sun = null;
         if (sunTime != null) {
-            body.requireSunByDateAndTime();
-            LatLon place = sunAt == null ? null : LatLon.parse(sunAt);
-            sun = SunLightField.of(info.geometry(), ZonedTimeParser.parse(sunTime), place, 0, Observer.SEA_LEVEL)
-                    .centralSun();
-        } else if (sunAt != null) {
-            throw new IllegalArgumentException("--sun-at needs --sun-time");
+            sun = SunLightField.of(info.geometry(), ZonedTimeParser.parse(sunTime), sunAt, 0, Observer.SEA_LEVEL).centralSun();
         }
         InfoReport report = new InfoReport(info, stats, sunTime, sun);
         spec.commandLine().getOut().println(json ? report.toJson() : report.toText());

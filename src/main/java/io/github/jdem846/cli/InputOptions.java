@@ -2,6 +2,7 @@ package io.github.jdem846.cli;
 
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.Window;
+import io.github.jdem846.raster.GridRequestException;
 import io.github.jdem846.render.DemLoader;
 import io.github.jdem846.render.OutputSize;
 import java.io.IOException;
@@ -9,10 +10,11 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
-import java.util.Locale;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 /**
  * The DEM to draw and which part of it at what size: {@code [FILE] --window --width --height --scale}. Without FILE
@@ -28,41 +30,59 @@ public final class InputOptions {
     @Mixin
     BodyOptions bodyOptions;
 
-    @Option(names = "--window", paramLabel = "W,S,E,N|cells:COL,ROW,W,H",
-            description = "Render only this part: a box in the DEM's CRS units (west,south,east,north) or a cell "
-                    + "rectangle 'cells:col,row,width,height' (row 0 = north). Only the window and the halo the "
-                    + "stages need are read.")
-    String window;
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec command;
 
-    @Option(names = "--width", paramLabel = "PIXELS", description = "Output width (height follows the aspect "
-            + "ratio unless --height is given too).")
+    @Option(names = "--window", paramLabel = "W,S,E,N|cells:COL,ROW,W,H", converter = Converters.WindowValue.class,
+            description = "Render only this part: a box in the DEM's CRS units (west,south,east,north; west < east, "
+                    + "south < north; clipped to the grid) or a cell rectangle 'cells:col,row,width,height' (row 0 = "
+                    + "north; inside the grid). Only the window and the halo the stages need are read.")
+    Window window;
+
+    @Option(names = "--width", paramLabel = "PIXELS", converter = Converters.Width.class,
+            description = "Output width, 1 to " + OutputSize.MAX_SIDE + " (height follows the aspect ratio unless "
+                    + "--height is given too; at most " + OutputSize.MAX_PIXELS + " pixels in all).")
     Integer width;
 
-    @Option(names = "--height", paramLabel = "PIXELS", description = "Output height.")
+    @Option(names = "--height", paramLabel = "PIXELS", converter = Converters.Height.class,
+            description = "Output height, 1 to " + OutputSize.MAX_SIDE + ".")
     Integer height;
 
-    @Option(names = "--scale", paramLabel = "FACTOR",
-            description = "Output pixels per DEM cell, e.g. 0.25 for a quarter-size picture.")
+    @Option(names = "--scale", paramLabel = "FACTOR", converter = Converters.Scale.class,
+            description = "Output pixels per DEM cell, e.g. 0.25 for a quarter-size picture: above 0, at most "
+                    + OutputSize.MAX_SIDE + ", and enough for one pixel on each side.")
     Double scale;
 
     /** The output size these options ask for. */
     OutputSize size() {
         if (scale != null) {
             if (width != null || height != null) {
-                throw new IllegalArgumentException("give either --scale or --width/--height, not both");
+                throw Usage.error(command, "give either --scale or --width/--height, not both");
             }
             return OutputSize.scale(scale);
         }
         if (width != null && height != null) {
-            return new OutputSize(positive(width, "--width"), positive(height, "--height"), 0);
+            try {
+                return new OutputSize(width, height, 0);
+            } catch (IllegalArgumentException e) {
+                throw Usage.invalid(command, e.getMessage(), "--width", "--height");
+            }
         }
         if (width != null) {
-            return OutputSize.width(positive(width, "--width"));
+            return OutputSize.width(width);
         }
-        if (height != null) {
-            return OutputSize.height(positive(height, "--height"));
-        }
-        return OutputSize.FULL;
+        return height != null ? OutputSize.height(height) : OutputSize.FULL;
+    }
+
+    /**
+     * Refuses options that do not go together (a scale with a width or height, --body with --radius) before
+     * anything is read.
+     *
+     * @throws picocli.CommandLine.ParameterException naming the options
+     */
+    void requireConsistent() {
+        size();
+        body();
     }
 
     /** True when {@code --window} was given. */
@@ -70,51 +90,41 @@ public final class InputOptions {
         return window != null;
     }
 
-    /** The window, or {@code null} for the whole grid. */
-    Window window() {
-        if (window == null) {
-            return null;
-        }
-        String text = window.trim();
-        boolean cells = text.toLowerCase(Locale.ROOT).startsWith("cells:");
-        String[] parts = (cells ? text.substring(6) : text).split(",");
-        String expected = "expected --window WEST,SOUTH,EAST,NORTH in the DEM's CRS units or "
-                + "cells:COL,ROW,WIDTH,HEIGHT";
-        if (parts.length != 4) {
-            throw new IllegalArgumentException("'" + window + "' is not a window: " + expected);
-        }
+    /**
+     * Loads what the picture needs, with {@code halo} (and the whole file's elevation range when asked); the
+     * bundled sample when no FILE was given. The command will hold {@code bytesPerPixel} per output pixel besides
+     * the grid: a picture that cannot fit in the heap is refused before the grid is read. A window or a size that
+     * does not fit the grid is bad usage.
+     */
+    DemLoader.Loaded load(DemLoader.Halo halo, boolean fileStatistics, int bytesPerPixel) throws IOException {
+        OutputSize size = size();
+        io.github.jdem846.geo.Ellipsoid ellipsoid = body().ellipsoid();
         try {
-            if (cells) {
-                return Window.cells(Integer.parseInt(parts[0].trim()), Integer.parseInt(parts[1].trim()),
-                        Integer.parseInt(parts[2].trim()), Integer.parseInt(parts[3].trim()));
+            if (file != null) {
+                return DemLoader.load(file, window, size, halo, fileStatistics, ellipsoid, bytesPerPixel);
             }
-            return Window.world(Double.parseDouble(parts[0].trim()), Double.parseDouble(parts[1].trim()),
-                    Double.parseDouble(parts[2].trim()), Double.parseDouble(parts[3].trim()));
-        } catch (NumberFormatException e) {
-            throw new IllegalArgumentException("'" + window + "' is not a window: " + expected);
+            Path tmp = Files.createTempFile("jdem846-sample-", ".tif");
+            try {
+                try (InputStream in = DemReader.class.getResourceAsStream(DemReader.SAMPLE_RESOURCE)) {
+                    if (in == null) {
+                        throw new IOException("the bundled sample DEM is missing from the jar");
+                    }
+                    Files.copy(in, tmp, StandardCopyOption.REPLACE_EXISTING);
+                }
+                return DemLoader.load(tmp, window, size, halo, fileStatistics, ellipsoid, bytesPerPixel);
+            } finally {
+                Files.deleteIfExists(tmp);
+            }
+        } catch (GridRequestException e) {
+            throw e.part() == GridRequestException.Part.WINDOW ? Usage.invalid(command, e.getMessage(), "--window")
+                    : Usage.invalid(command, e.getMessage(), sizeOptions());
         }
     }
 
-    /**
-     * Loads what the picture needs, with {@code halo} (and the whole file's elevation range when asked); the
-     * bundled sample when no FILE was given.
-     */
-    DemLoader.Loaded load(DemLoader.Halo halo, boolean fileStatistics) throws IOException {
-        if (file != null) {
-            return DemLoader.load(file, window(), size(), halo, fileStatistics, body().ellipsoid());
-        }
-        Path tmp = Files.createTempFile("jdem846-sample-", ".tif");
-        try {
-            try (InputStream in = DemReader.class.getResourceAsStream(DemReader.SAMPLE_RESOURCE)) {
-                if (in == null) {
-                    throw new IOException("the bundled sample DEM is missing from the jar");
-                }
-                Files.copy(in, tmp, StandardCopyOption.REPLACE_EXISTING);
-            }
-            return DemLoader.load(tmp, window(), size(), halo, fileStatistics, body().ellipsoid());
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+    /** The size options given, for a message. */
+    private String[] sizeOptions() {
+        return scale != null ? new String[] {"--scale"} : width != null && height != null
+                ? new String[] {"--width", "--height"} : new String[] {width != null ? "--width" : "--height"};
     }
 
     /** The body of {@code --body}/{@code --radius}; the Earth by default. */
@@ -125,12 +135,5 @@ public final class InputOptions {
     /** The DEM file named, or {@code null} for the sample. */
     Path file() {
         return file;
-    }
-
-    private static int positive(int v, String option) {
-        if (v < 1) {
-            throw new IllegalArgumentException(option + " must be at least 1 pixel, got " + v);
-        }
-        return v;
     }
 }

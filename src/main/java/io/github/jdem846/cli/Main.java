@@ -56,7 +56,9 @@ public final class Main implements Runnable {
                 cl.addSubcommand(e.getKey(), e.getValue().get());
             }
         }
-        cl.setExecutionExceptionHandler(new CliExceptionHandler());
+        CliExceptionHandler handler = new CliExceptionHandler();
+        cl.setExecutionExceptionHandler(handler);
+        cl.setParameterExceptionHandler(handler);
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         return cl;
     }
@@ -80,12 +82,15 @@ public final class Main implements Runnable {
         } catch (OutOfMemoryError e) {
             java.io.PrintWriter err = cl.getErr();
             err.println("jdem846: out of memory: the grid and the picture do not fit in the Java heap (at most "
-                    + heapSize() + "); make a smaller picture with --scale, --width or --window, or give Java more"
-                    + " heap, e.g. java -Xmx8g -jar jdem846-cli.jar …");
+                    + heapSize() + "); " + HEAP_ADVICE);
             err.flush();
             return 1;
         }
     }
+
+    /** What to do about a picture too large for the heap. */
+    static final String HEAP_ADVICE = "make a smaller picture with --scale, --width or --window, or give Java more"
+            + " heap, e.g. java -Xmx8g -jar jdem846-cli.jar …";
 
     private static String heapSize() {
         double mib = Runtime.getRuntime().maxMemory() / 1048576.0;

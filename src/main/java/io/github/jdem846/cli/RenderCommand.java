@@ -9,7 +9,6 @@ import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import java.io.PrintWriter;
-import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -37,19 +36,22 @@ public final class RenderCommand implements Callable<Integer> {
     TintOptions tint;
 
     @Option(names = "--hillshade", paramLabel = "METHOD", defaultValue = "jdem846",
+            converter = Converters.HillshadeOrNone.class,
             description = "jdem846 (the article's, default), horn, multidirectional or none.")
-    String hillshade;
+    HillshadeMethod method;
 
     @Mixin
     ShadingOptions shading;
 
     @Option(names = "--shadows", paramLabel = "ALGORITHM", defaultValue = "none",
+            converter = Converters.Algorithm.class,
             description = "Cast shadows: none (default), sweep (fast, O(cells)), march (the article's ray march, "
                     + "fixed) or exact (the slow reference).")
-    String shadows;
+    ShadowAlgorithm algorithm;
 
     @Option(names = "--shadow-intensity", paramLabel = "0..1", defaultValue = "0.4",
-            description = "A cell in cast shadow loses 2 × this much brightness. Default: ${DEFAULT-VALUE}.")
+            converter = Converters.ShadowIntensity.class,
+            description = "A cell in cast shadow loses 2 × this much brightness, 0 to 1. Default: ${DEFAULT-VALUE}.")
     double shadowIntensity;
 
     @Mixin
@@ -72,9 +74,8 @@ public final class RenderCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         output.refuseOverwriting(input);
         PhaseTimes times = new PhaseTimes();
-        HillshadeMethod method = hillshade.toLowerCase(Locale.ROOT).equals("none") ? null
-                : HillshadeMethod.fromName(hillshade);
-        ShadowAlgorithm algorithm = ShadowAlgorithm.parse(shadows);
+        input.requireConsistent();
+        sun.requireConsistent(input.bodyOptions);
         shadowOptions.noteUnused(algorithm, err);
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(method)
                 .withHillshadeOptions(shading.options()).withShadows(algorithm)
@@ -87,8 +88,14 @@ public final class RenderCommand implements Callable<Integer> {
         Scene warmUpScene = scene.withLight(new LightDirection(320, 25));
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem,
                 warmUpScene), input.file());
-        DemLoader.Loaded loaded = input.load(halo, scene.tint() != null || scene.hasShadows() && input.hasWindow());
-        warmUp.stop();
+        DemLoader.Loaded loaded;
+        try {
+            // besides the grid: the ARGB picture, and the shadow mask
+            loaded = input.load(halo, scene.tint() != null || scene.hasShadows() && input.hasWindow(),
+                    Integer.BYTES + (scene.hasShadows() ? Float.BYTES : 0));
+        } finally {
+            warmUp.stop();
+        }
         if (scene.hasShadows()) {
             scene = scene.withShadowOptions(CommandSupport.forLoadedGrid(scene.shadowOptions(), loaded));
         }

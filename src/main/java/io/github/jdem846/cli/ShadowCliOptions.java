@@ -16,8 +16,8 @@ public final class ShadowCliOptions {
             description = "Account for the Earth's curvature and refraction along the rays (matters beyond ~10 km).")
     boolean curvature;
 
-    @Option(names = "--refraction", paramLabel = "K", defaultValue = "0.13",
-            description = "Refraction coefficient for --curvature. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--refraction", paramLabel = "K", defaultValue = "0.13", converter = Converters.Refraction.class,
+            description = "Refraction coefficient for --curvature, -1 to 1. Default: ${DEFAULT-VALUE}.")
     double refraction;
 
     @Option(names = "--thin-features",

@@ -33,8 +33,9 @@ public final class ShadowsCommand implements Callable<Integer> {
     OutputOptions output;
 
     @Option(names = {"--algorithm", "--shadows"}, paramLabel = "ALGORITHM", defaultValue = "sweep",
+            converter = Converters.MaskAlgorithm.class,
             description = "sweep (default, O(cells)), march (the article's ray march, fixed) or exact (reference).")
-    String algorithm;
+    ShadowAlgorithm algorithm;
 
     @Mixin
     ShadowCliOptions shadowOptions;
@@ -56,19 +57,23 @@ public final class ShadowsCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         output.refuseOverwriting(input);
         PhaseTimes times = new PhaseTimes();
-        ShadowAlgorithm alg = ShadowAlgorithm.parse(algorithm);
-        if (alg == ShadowAlgorithm.NONE) {
-            throw new IllegalArgumentException("--algorithm none makes no mask; choose sweep, march or exact");
-        }
+        input.requireConsistent();
+        sun.requireConsistent(input.bodyOptions);
+        ShadowAlgorithm alg = algorithm;
         shadowOptions.noteUnused(alg, err);
         Scene scene = Scene.defaults().withTint(null).withHillshade(null).withShadows(alg)
                 .withShadowOptions(shadowOptions.options());
         Scene warmUpScene = scene.withLight(new LightDirection(300, 10));
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).shadows(dem,
                 warmUpScene, RenderProgress.NONE), input.file());
-        DemLoader.Loaded loaded = input.load(
-                CommandSupport.shadowHalo(sun, input.body(), 1, scene.shadowOptions(), err), input.hasWindow());
-        warmUp.stop();
+        DemLoader.Loaded loaded;
+        try {
+            // besides the grid: the mask, and its bytes
+            loaded = input.load(CommandSupport.shadowHalo(sun, input.body(), 1, scene.shadowOptions(), err),
+                    input.hasWindow(), Float.BYTES + Byte.BYTES);
+        } finally {
+            warmUp.stop();
+        }
         times.lap("read");
         scene = scene.withShadowOptions(CommandSupport.forLoadedGrid(scene.shadowOptions(), loaded));
         CommandSupport.printNotices(loaded, err);

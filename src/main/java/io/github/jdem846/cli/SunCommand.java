@@ -1,6 +1,5 @@
 package io.github.jdem846.cli;
 
-import io.github.jdem846.sun.Body;
 import io.github.jdem846.geo.LatLon;
 import io.github.jdem846.sun.Observer;
 import io.github.jdem846.sun.SolarCalculator;
@@ -51,22 +50,23 @@ public final class SunCommand implements Callable<Integer> {
                     + "or -33.92,18.42.")
     LatLon at;
 
-    @Option(names = "--height", paramLabel = "M", defaultValue = "0",
-            description = "Height above sea level in metres (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--height", paramLabel = "M", defaultValue = "0", converter = Converters.ObserverHeight.class,
+            description = "Height above sea level in metres, -500 to 20000 (default: ${DEFAULT-VALUE}).")
     double heightMeters;
 
-    @Option(names = "--pressure", paramLabel = "MBAR",
-            description = "Mean air pressure in millibars, for refraction (default: standard atmosphere at the "
-                    + "height, 1013.25 at sea level).")
+    @Option(names = "--pressure", paramLabel = "MBAR", converter = Converters.Pressure.class,
+            description = "Mean air pressure in millibars for refraction, above 0 and at most 2000 (default: "
+                    + "standard atmosphere at the height, 1013.25 at sea level).")
     Double pressure;
 
-    @Option(names = "--temperature", paramLabel = "C",
-            description = "Mean air temperature in °C, for refraction (default: standard atmosphere at the "
-                    + "height, 15 at sea level).")
+    @Option(names = "--temperature", paramLabel = "C", converter = Converters.Temperature.class,
+            description = "Mean air temperature in °C for refraction, -100 to 100 (default: standard atmosphere at "
+                    + "the height, 15 at sea level).")
     Double temperature;
 
-    @Option(names = "--delta-t", paramLabel = "S",
-            description = "Delta T = TT - UT in seconds (default: the estimate for the date, about 71 s in 2024).")
+    @Option(names = "--delta-t", paramLabel = "S", converter = Converters.DeltaT.class,
+            description = "Delta T = TT - UT in seconds, within ±200000 (default: the estimate for the date, about "
+                    + "71 s in 2024).")
     Double deltaT;
 
     @Mixin
@@ -80,12 +80,7 @@ public final class SunCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        Body body = body();
-        try {
-            body.requireSunByDateAndTime();
-        } catch (IllegalArgumentException e) {
-            throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
-        }
+        bodyOptions.bodyForSunByTime();
         Observer observer = observer();
         SunAtInstant sun = SunAtInstant.of(time, observer);
         SunPosition position = sun.position(at);
@@ -96,30 +91,19 @@ public final class SunCommand implements Callable<Integer> {
         return 0;
     }
 
-    private Body body() {
-        try {
-            return bodyOptions.body();
-        } catch (IllegalArgumentException e) {
-            throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
-        }
-    }
-
+    /** The observer of the options, each of which was checked as it was parsed. */
     private Observer observer() {
-        try {
-            Observer o = Observer.atHeight(heightMeters);
-            if (pressure != null) {
-                o = o.withPressure(pressure);
-            }
-            if (temperature != null) {
-                o = o.withTemperature(temperature);
-            }
-            if (deltaT != null) {
-                o = o.withDeltaT(deltaT);
-            }
-            return o;
-        } catch (IllegalArgumentException e) {
-            throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+        Observer o = Observer.atHeight(heightMeters);
+        if (pressure != null) {
+            o = o.withPressure(pressure);
         }
+        if (temperature != null) {
+            o = o.withTemperature(temperature);
+        }
+        if (deltaT != null) {
+            o = o.withDeltaT(deltaT);
+        }
+        return o;
     }
 
     private String text(SunAtInstant sun, SunPosition p, SunEvents e) {

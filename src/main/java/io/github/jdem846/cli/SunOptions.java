@@ -13,7 +13,6 @@ import java.io.PrintWriter;
 import java.util.Locale;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 /**
@@ -25,39 +24,15 @@ public final class SunOptions {
     @Spec(Spec.Target.MIXEE)
     CommandSpec command;
 
-    /** Not a number (NaN, ±Infinity) is bad usage like "abc" (exit 2); a number out of range fails later (exit 1). */
-    Double azimuth;
-
-    Double elevation;
-
-    @Option(names = {"--sun-azimuth", "--azimuth"}, paramLabel = "DEG",
-            description = "Sun azimuth, degrees clockwise from north (any value; reduced to [0, 360)). Default: 320.")
-    void azimuth(double degrees) {
-        if (!Double.isFinite(degrees)) {
-            throw new ParameterException(command.commandLine(), "--sun-azimuth must be a finite number of degrees"
-                    + " (any value, e.g. -720 or 250), got " + degrees);
-        }
-        azimuth = degrees;
-    }
-
-    @Option(names = {"--sun-elevation", "--altitude"}, paramLabel = "DEG",
-            description = "Sun elevation above the horizon in degrees, -90..90 (≤ 0: no direct light). Default: 25.")
-    void elevation(double degrees) {
-        if (!Double.isFinite(degrees)) {
-            throw new ParameterException(command.commandLine(), "--sun-elevation must be a number of degrees"
-                    + " between -90 and 90, got " + degrees);
-        }
-        elevation = degrees;
-    }
-
-    @Option(names = "--sun-time", paramLabel = "TIME",
+    @Option(names = "--sun-time", paramLabel = "TIME", converter = Converters.Time.class,
             description = "Compute the sun for this instant instead (ISO-8601 with offset or zone, e.g. "
                     + "2024-06-21T05:30+02:00 or 2024-06-21T05:30[Europe/Luxembourg]), seen from the DEM's centre.")
     String time;
 
-    @Option(names = "--sun-at", paramLabel = "LAT,LON",
-            description = "With --sun-time: the place to compute the sun for (needed when the DEM's CRS is unknown).")
-    String place;
+    @Option(names = "--sun-at", paramLabel = "LAT,LON", converter = SunCommand.LatLonConverter.class,
+            description = "With --sun-time: the place to compute the sun for, latitude -90 to 90 and longitude -180 "
+                    + "to 180 in degrees (needed when the DEM's CRS is unknown).")
+    LatLon place;
 
     @Option(names = "--sun-per-tile",
             description = "With --sun-time: recompute the sun for every tile from its own latitude/longitude.")
@@ -67,6 +42,34 @@ public final class SunOptions {
             description = "With --sun-time: the original's twilight fade, darkening the scene linearly from zenith "
                     + "90° to 108° (civil to astronomical twilight).")
     boolean twilight;
+
+    @Option(names = {"--sun-azimuth", "--azimuth"}, paramLabel = "DEG", converter = Converters.Azimuth.class,
+            description = "Sun azimuth, degrees clockwise from north: any finite number, reduced to [0, 360). "
+                    + "Default: 320.")
+    Double azimuth;
+
+    @Option(names = {"--sun-elevation", "--altitude"}, paramLabel = "DEG", converter = Converters.Elevation.class,
+            description = "Sun elevation above the horizon in degrees, -90 to 90 (at 0 or below, cast shadows "
+                    + "cover every cell). Default: 25.")
+    Double elevation;
+
+    /**
+     * Refuses options that do not go together: a sun by time and by angles, or the sun-by-time options without
+     * {@code --sun-time}; and a sun by time on a body other than the Earth.
+     *
+     * @throws picocli.CommandLine.ParameterException naming the options
+     */
+    void requireConsistent(BodyOptions body) {
+        if (time == null && (place != null || perTile || twilight)) {
+            throw Usage.error(command, "--sun-at, --sun-per-tile and --twilight need --sun-time");
+        }
+        if (time != null && (azimuth != null || elevation != null)) {
+            throw Usage.error(command, "give either --sun-time or --sun-azimuth/--sun-elevation, not both");
+        }
+        if (time != null) {
+            body.bodyForSunByTime();
+        }
+    }
 
     /** True when the sun is given by date and time. */
     boolean byTime() {
@@ -82,21 +85,16 @@ public final class SunOptions {
     record Lighting(LightField field, double fade) {
     }
 
-    /** The light over {@code grid} and the twilight darkening; prints the sun used on {@code err}. */
+    /**
+     * The light over {@code grid} and the twilight darkening; prints the sun used on {@code err}. The options must
+     * be consistent ({@link #requireConsistent}).
+     */
     Lighting light(GridGeometry grid, Body body, int tileSize, PrintWriter err) {
         if (time == null) {
-            if (place != null || perTile || twilight) {
-                throw new IllegalArgumentException("--sun-at, --sun-per-tile and --twilight need --sun-time");
-            }
             return new Lighting(LightField.uniform(fixedLight()), 0);
         }
-        if (azimuth != null || elevation != null) {
-            throw new IllegalArgumentException("give either --sun-time or --sun-azimuth/--sun-elevation, not both");
-        }
         body.requireSunByDateAndTime();
-        LatLon at = place == null ? null : LatLon.parse(place);
-        SunLightField field = SunLightField.of(grid, ZonedTimeParser.parse(time), at, perTile ? tileSize : 0,
-                Observer.SEA_LEVEL);
+        SunLightField field = SunLightField.of(grid, ZonedTimeParser.parse(time), place, perTile ? tileSize : 0, Observer.SEA_LEVEL);
         double fade = twilight ? TwilightFade.ORIGINAL.darkening(field.centralSun().zenithDegrees()) : 0;
         err.println(String.format(Locale.ROOT, "jdem846: sun at %s: azimuth %.2f°, elevation %.2f°%s", time,
                 field.centralSun().azimuthDegrees(), field.centralSun().elevationDegrees(),

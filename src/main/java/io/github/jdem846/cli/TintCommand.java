@@ -46,11 +46,16 @@ public final class TintCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         output.refuseOverwriting(input);
         PhaseTimes times = new PhaseTimes();
+        input.requireConsistent();
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(null);
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem, scene),
                 input.file());
-        DemLoader.Loaded loaded = input.load(DemLoader.Halo.NONE, scene.tint() != null);
-        warmUp.stop();
+        DemLoader.Loaded loaded;
+        try {
+            loaded = input.load(DemLoader.Halo.NONE, scene.tint() != null, Integer.BYTES);
+        } finally {
+            warmUp.stop();
+        }
         times.lap("read");
         CommandSupport.printNotices(loaded, err);
         RenderedImage image = new Renderer(execution.settings()).render(loaded.dem(),

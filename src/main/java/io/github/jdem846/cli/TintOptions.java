@@ -6,10 +6,15 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /** {@code --tint NAME|FILE} with gdaldem's {@code --exact-color}/{@code --nearest-color}. */
 public final class TintOptions {
+
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec command;
 
     @Option(names = "--tint", paramLabel = "NAME|FILE", defaultValue = ColorRamp.DEFAULT_NAME,
             description = "Colour ramp: a built-in name (hypsometric, hypsometric-natural, bathymetric, etopo1, "
@@ -24,10 +29,13 @@ public final class TintOptions {
             description = "Colour file: the nearest entry's colour, no interpolation (gdaldem -nearest_color_entry).")
     boolean nearest;
 
-    /** The ramp, or {@code null} for 'none'. */
+    /**
+     * The ramp, or {@code null} for 'none'. An unknown name or flags that do not apply are bad usage; a colour file
+     * that cannot be read is an input error.
+     */
     ColorRamp ramp() throws IOException {
         if (exact && nearest) {
-            throw new IllegalArgumentException("give --exact-color or --nearest-color, not both");
+            throw Usage.error(command, "give --exact-color or --nearest-color, not both");
         }
         if (tint.toLowerCase(Locale.ROOT).equals("none")) {
             return null;
@@ -39,13 +47,17 @@ public final class TintOptions {
             return ColorRamp.fromGdalColorFile(file, mode);
         }
         if (exact || nearest) {
-            throw new IllegalArgumentException("--exact-color and --nearest-color apply to colour files; '" + tint
+            throw Usage.error(command, "--exact-color and --nearest-color apply to colour files; '" + tint
                     + "' is not a file");
         }
         if (tint.contains("/") || tint.contains("\\") || tint.contains(".")) {
             throw new IllegalArgumentException("colour file '" + tint + "' does not exist (built-in ramps: "
                     + String.join(", ", ColorRamp.names()) + ")");
         }
-        return ColorRamp.named(tint);
+        try {
+            return ColorRamp.named(tint);
+        } catch (IllegalArgumentException e) {
+            throw Usage.invalid(command, e.getMessage(), "--tint");
+        }
     }
 }

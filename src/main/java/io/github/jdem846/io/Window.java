@@ -1,6 +1,7 @@
 package io.github.jdem846.io;
 
 import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.raster.GridRequestException;
 
 /**
  * A part of a grid to read: a rectangle of cells, or a world bounding box in the grid's CRS units.
@@ -21,8 +22,8 @@ public sealed interface Window permits Window.Cells, Window.World {
     /**
      * The cells of {@code grid} this window covers.
      *
-     * @throws IllegalArgumentException when the window is outside the grid (cells), does not intersect it (world)
-     *                                  or is malformed; the message gives the grid's size or extent
+     * @throws GridRequestException when the window is outside the grid (cells) or does not intersect it (world);
+     *                               the message gives the grid's size or extent
      */
     Cells resolve(GridGeometry grid);
 
@@ -45,8 +46,9 @@ public sealed interface Window permits Window.Cells, Window.World {
         @Override
         public Cells resolve(GridGeometry grid) {
             if ((long) col + width > grid.width() || (long) row + height > grid.height()) {
-                throw new IllegalArgumentException("window of " + width + "×" + height + " cells at column " + col
-                        + ", row " + row + " is not inside the " + grid.width() + "×" + grid.height() + " grid");
+                throw new GridRequestException(GridRequestException.Part.WINDOW, "window of " + width + "×" + height
+                        + " cells at column " + col + ", row " + row + " is not inside the " + grid.width() + "×"
+                        + grid.height() + " grid");
             }
             return this;
         }
@@ -80,10 +82,10 @@ public sealed interface Window permits Window.Cells, Window.World {
             int row0 = (int) Math.max(0, Math.floor(snap(r0)));
             int row1 = (int) Math.min(grid.height(), Math.ceil(snap(r1)));
             if (col1 <= col0 || row1 <= row0) {
-                throw new IllegalArgumentException("world window west " + west + ", south " + south + ", east "
-                        + east + ", north " + north + " does not intersect the grid's extent west "
-                        + grid.originX() + ", south " + grid.southY() + ", east " + grid.eastX() + ", north "
-                        + grid.originY());
+                throw new GridRequestException(GridRequestException.Part.WINDOW, "world window west " + west
+                        + ", south " + south + ", east " + east + ", north " + north + " does not intersect the "
+                        + "grid's extent west " + grid.originX() + ", south " + grid.southY() + ", east "
+                        + grid.eastX() + ", north " + grid.originY());
             }
             return new Cells(col0, row0, col1 - col0, row1 - row0);
         }

@@ -223,9 +223,19 @@ public record ReliefJob(Path input, Product product, Scene scene, Window window,
         // a percent tint spans the whole file's range; a windowed sweep needs the file's lowest elevation
         boolean fileStatistics = s.tint() != null || s.hasShadows() && window != null;
         if (input != null) {
-            return DemLoader.load(input, window, size, halo, fileStatistics, body.ellipsoid());
+            return DemLoader.load(input, window, size, halo, fileStatistics, body.ellipsoid(), bytesPerPixel(s));
         }
-        return DemLoader.loadSample(window, size, halo, fileStatistics, body.ellipsoid());
+        return DemLoader.loadSample(window, size, halo, fileStatistics, body.ellipsoid(), bytesPerPixel(s));
+    }
+
+    /** What the product holds per output pixel besides the grid (for the heap check before the read). */
+    private int bytesPerPixel(Scene s) {
+        return switch (product) {
+            case RELIEF -> Integer.BYTES + (s.hasShadows() ? Float.BYTES : 0);
+            case HILLSHADE -> Byte.BYTES;
+            case TINT -> Integer.BYTES;
+            case SHADOWS -> Float.BYTES + Byte.BYTES;
+        };
     }
 
     /**

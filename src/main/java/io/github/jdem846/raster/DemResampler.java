@@ -14,10 +14,21 @@ public final class DemResampler {
     private DemResampler() {
     }
 
-    /** {@code dem} resampled to {@code width × height} cells (returned as is when the size already matches). */
+    /** Most cells of a resampled grid: the longest Java array. */
+    static final long MAX_CELLS = Integer.MAX_VALUE - 8L;
+
+    /**
+     * {@code dem} resampled to {@code width × height} cells (returned as is when the size already matches).
+     *
+     * @throws IllegalArgumentException unless the size is at least 1×1 and at most {@link #MAX_CELLS} cells
+     */
     public static Dem resample(Dem dem, int width, int height) {
         if (width < 1 || height < 1) {
             throw new IllegalArgumentException("output size must be at least 1×1, got " + width + "×" + height);
+        }
+        if ((long) width * height > MAX_CELLS) {
+            throw new IllegalArgumentException("a grid of " + width + "×" + height + " = " + (long) width * height
+                    + " cells is more than one Java array can hold (at most " + MAX_CELLS + ")");
         }
         if (width == dem.width() && height == dem.height()) {
             return dem;

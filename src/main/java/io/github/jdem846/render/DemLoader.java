@@ -121,6 +121,20 @@ public final class DemLoader {
      */
     public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics,
                               Ellipsoid body) throws IOException {
+        return load(file, window, size, halo, fileStatistics, body, 0);
+    }
+
+    /**
+     * As {@link #load(Path, Window, OutputSize, Halo, boolean, Ellipsoid)}, for a caller that will also hold
+     * {@code bytesPerPixel} per output pixel (e.g. 4 for an ARGB picture). Once the header is read, and before any
+     * cell is, the load is refused when the grid at output resolution and that picture cannot fit in the Java heap
+     * even when it is empty.
+     *
+     * @throws io.github.jdem846.raster.GridRequestException when the window or the size do not fit the grid
+     * @throws InsufficientHeapException                      when the grid and the picture exceed the heap's maximum
+     */
+    public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics,
+                              Ellipsoid body, int bytesPerPixel) throws IOException {
         Objects.requireNonNull(size, "size");
         Objects.requireNonNull(halo, "halo");
         Objects.requireNonNull(body, "body");
@@ -128,6 +142,8 @@ public final class DemLoader {
         Window.Cells win = window == null ? Window.cells(0, 0, info.width(), info.height())
                 : window.resolve(info.geometry());
         int[] px = size.pixelsFor(win.width(), win.height());
+        long maxHeap = Runtime.getRuntime().maxMemory();
+        InsufficientHeapException.requireFits((long) px[0] * px[1], px[0], px[1], bytesPerPixel, maxHeap);
         double fx = (double) win.width() / px[0];
         double fy = (double) win.height() / px[1];
         StreamedStatistics streamed = new StreamedStatistics(file);
@@ -139,12 +155,15 @@ public final class DemLoader {
         int south = haloCells(h[3], fy, info.height() - win.row() - win.height());
         Window.Cells read = Window.cells(win.col() - west, win.row() - north, win.width() + west + east,
                 win.height() + north + south);
+        // (saturated at the int range: DemResampler refuses a grid larger than one Java array)
+        int outW = (int) Math.min(Integer.MAX_VALUE, Math.max(1, Math.round(read.width() / fx)));
+        int outH = (int) Math.min(Integer.MAX_VALUE, Math.max(1, Math.round(read.height() / fy)));
+        // the halo adds cells around the picture: the grid at output resolution again, with them
+        InsufficientHeapException.requireFits((long) outW * outH, px[0], px[1], bytesPerPixel, maxHeap);
         int decimation = (int) Math.max(1, Math.floor(Math.min(fx, fy) + 1e-9));
         LoadedDem loaded = DemReader.load(file, new ReadRequest(read, decimation));
         Dem read0 = loaded.dem();
         Dem onBody = read0.withGeometry(read0.geometry().withDefaultEllipsoid(body));
-        int outW = (int) Math.max(1, Math.round(read.width() / fx));
-        int outH = (int) Math.max(1, Math.round(read.height() / fy));
         Dem dem = DemResampler.resample(onBody, outW, outH);
         int col = (int) Math.round(west / fx);
         int row = (int) Math.round(north / fy);
@@ -160,11 +179,11 @@ public final class DemLoader {
     }
 
     /**
-     * As {@link #load(Path, Window, OutputSize, Halo, boolean, Ellipsoid)} for the bundled sample DEM ({@link
+     * As {@link #load(Path, Window, OutputSize, Halo, boolean, Ellipsoid, int)} for the bundled sample DEM ({@link
      * DemReader#SAMPLE_RESOURCE}), copied to a temporary file for the read and deleted after it.
      */
     public static Loaded loadSample(Window window, OutputSize size, Halo halo, boolean fileStatistics,
-                                    Ellipsoid body) throws IOException {
+                                    Ellipsoid body, int bytesPerPixel) throws IOException {
         Path tmp = java.nio.file.Files.createTempFile("jdem846-sample-", ".tif");
         try {
             try (java.io.InputStream in = DemReader.class.getResourceAsStream(DemReader.SAMPLE_RESOURCE)) {
@@ -173,7 +192,7 @@ public final class DemLoader {
                 }
                 java.nio.file.Files.copy(in, tmp, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             }
-            return load(tmp, window, size, halo, fileStatistics, body);
+            return load(tmp, window, size, halo, fileStatistics, body, bytesPerPixel);
         } finally {
             java.nio.file.Files.deleteIfExists(tmp);
         }

@@ -86,14 +86,14 @@ class BodyOptionsTest {
         Path out = dir.resolve("mars.png");
         CliRun run = CliRun.of("render", flt.toString(), "-o", out.toString(), "--body", "mars", "--sun-time",
                 "2024-06-21T12:00Z");
-        assertEquals(1, run.exitCode());
+        assertEquals(2, run.exitCode(), "bad usage");
         assertTrue(run.err().contains("Earth only"), run.err());
         assertFalse(Files.exists(out));
         CliRun info = CliRun.of("info", flt.toString(), "--body", "moon", "--sun-time", "2024-06-21T12:00Z");
-        assertEquals(1, info.exitCode());
+        assertEquals(2, info.exitCode());
         assertTrue(info.err().contains("Earth only"), info.err());
         CliRun both = CliRun.of("info", flt.toString(), "--body", "moon", "--radius", "5");
-        assertEquals(1, both.exitCode());
+        assertEquals(2, both.exitCode());
         assertTrue(both.err().contains("not both"), both.err());
     }
 

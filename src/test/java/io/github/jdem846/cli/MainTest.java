@@ -34,4 +34,20 @@ class MainTest {
         assertEquals(2, typo.exitCode());
         assertTrue(typo.err().contains("Did you mean"), typo.err());
     }
+
+    /** Options are listed in their groups, as declared (input, output, tint, hillshade, shadows, sun, threads). */
+    @Test
+    void helpListsTheOptionsInTheOrderTheyAreDeclared() {
+        String all = CliRun.of("render", "--help").out();
+        String help = all.substring(all.indexOf("\n      [FILE]")); // the option list, not the synopsis
+        String[] order = {"--window=", "--width=", "--height=", "--scale=", "--output=", "--tint=", "--hillshade=",
+            "--z-factor=", "--xy-scale=", "--shadows=", "--shadow-intensity=", "--refraction=", "--sun-time=",
+            "--sun-azimuth=", "--sun-elevation=", "--threads=", "--tile-size="};
+        int at = -1;
+        for (String option : order) {
+            int next = help.indexOf(option, at + 1);
+            assertTrue(next > at, option + " after the previous one in:\n" + help);
+            at = next;
+        }
+    }
 }

@@ -162,14 +162,15 @@ class RenderCommandsTest {
         assertEquals(1, missing.exitCode());
         assertTrue(missing.err().contains("no/such/dem.tif"), missing.err());
         assertFalse(missing.err().contains("\tat "), "no stack trace: " + missing.err());
+        // an unknown ramp, a window outside the grid and an angle out of range are bad usage (exit 2)
         CliRun badTint = CliRun.of("render", BT, "-o", out.toString(), "--tint", "rainbowz");
-        assertEquals(1, badTint.exitCode());
+        assertEquals(2, badTint.exitCode());
         assertTrue(badTint.err().contains("hypsometric"), "lists the ramps: " + badTint.err());
         CliRun badWindow = CliRun.of("render", BT, "-o", out.toString(), "--window", "cells:2000,0,10,10");
-        assertEquals(1, badWindow.exitCode());
+        assertEquals(2, badWindow.exitCode());
         assertTrue(badWindow.err().contains("1197"), badWindow.err());
         CliRun badSun = CliRun.of("render", BT, "-o", out.toString(), "--sun-elevation", "95");
-        assertEquals(1, badSun.exitCode());
+        assertEquals(2, badSun.exitCode());
         assertTrue(badSun.err().contains("-90 and 90"), badSun.err());
         CliRun badExt = CliRun.of("render", BT, "-o", dir.resolve("x.jpg").toString());
         assertEquals(1, badExt.exitCode());

@@ -2,12 +2,21 @@ package io.github.jdem846.raster;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.testing.TestDems;
 import org.junit.jupiter.api.Test;
 
 class DemResamplerTest {
+
+    @Test
+    void aSizeLargerThanAJavaArrayIsRefusedBeforeAllocating() {
+        Dem dem = TestDems.metric(2, 1, 10, new float[] {1, 2});
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> DemResampler.resample(dem, 100_000, 53_718));
+        assertTrue(e.getMessage().contains("100000×53718 = 5371800000 cells"), e.getMessage());
+    }
 
     @Test
     void integerShrinkIsTheBlockMeanOfValidCells() {
