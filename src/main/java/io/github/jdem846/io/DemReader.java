@@ -67,9 +67,10 @@ public final class DemReader {
             int d = request.decimation();
             int outW = BlockReader.outputSize(cells.width(), d);
             int outH = BlockReader.outputSize(cells.height(), d);
-            long bandBytes = BlockReader.bandBytes(source, cells, d);
-            MemoryGuard.requireFits(file, outW, outH, bandBytes, "read a window or a"
-                    + " decimated version, or give Java more heap with -Xmx");
+            String advice = "read a window or a decimated version, or give Java more heap with -Xmx";
+            MemoryGuard.requireFits(file, outW, outH, 0, advice); // the grid alone, then its read buffer alone
+            requireBandFits(file, source, cells, d);
+            MemoryGuard.requireFits(file, outW, outH, BlockReader.bandBytes(source, cells, d), advice);
             float[] values = new float[outW * outH];
             double noData = info.noDataOrNaN();
             ElevationStatistics stats = readInParts(file, source, cells, d, parallelism, minCellsPerPart,
@@ -107,7 +108,7 @@ public final class DemReader {
                 ? (int) Math.max(1, Math.min(Math.min(parallelism, units), byCells)) : 1;
         long bandBytes = BlockReader.bandBytes(source, cells, d);
         // Each part holds a band buffer of its own: read with fewer parts rather than run out of heap.
-        while (parts > 1 && !MemoryGuard.fits(0, 0, bandBytes * parts)) {
+        while (parts > 1 && !MemoryGuard.fits(0, 0, MemoryGuard.saturatedMultiply(bandBytes, parts))) {
             parts--;
         }
         if (parts == 1) {
@@ -167,6 +168,17 @@ public final class DemReader {
         }
     }
 
+    /**
+     * Refuses a read whose band buffer would not fit, before it is allocated: a file of huge strips or tiles (or
+     * a corrupt one declaring them).
+     */
+    private static void requireBandFits(Path file, RasterSource source, Window.Cells cells, int d)
+            throws DemFormatException {
+        MemoryGuard.requireBandFits(file, cells.width(), BlockReader.bandRows(source, cells, d), "read a window,"
+                + " or give Java more heap with -Xmx; for a file of huge strips, re-tile it, e.g. gdal_translate -co"
+                + " TILED=YES in.tif out.tif");
+    }
+
     private static int gcd(int a, int b) {
         return b == 0 ? a : gcd(b, a % b);
     }
@@ -191,8 +203,9 @@ public final class DemReader {
         try (RasterSource source = open(file)) {
             DemInfo info = source.info();
             double noData = info.noDataOrNaN();
-            return readInParts(file, source, new Window.Cells(0, 0, info.width(), info.height()), 1, parallelism,
-                    minCellsPerPart, (src, part, outRow0) -> BlockReader.read(src, part, 1, noData,
+            Window.Cells all = new Window.Cells(0, 0, info.width(), info.height());
+            requireBandFits(file, source, all, 1);
+            return readInParts(file, source, all, 1, parallelism, minCellsPerPart, (src, part, outRow0) -> BlockReader.read(src, part, 1, noData,
                             (row, v) -> { }));
         }
     }
