@@ -80,6 +80,29 @@ class HugeSizeTest {
     }
 
     @Test
+    void rowsLongerThanOneReadAreReadInPieces() throws IOException {
+        // 1 100 000 float32 columns: 4.4 MB a row, more than the 4 MiB read at once
+        int cols = 1_100_000;
+        java.nio.ByteBuffer b = java.nio.ByteBuffer.allocate(cols * 2 * 4).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        for (int i = 0; i < cols * 2; i++) {
+            b.putFloat(i % 1000 + (i >= cols ? 0.5f : 0));
+        }
+        Path flt = tmp.resolve("long.flt");
+        Files.write(flt, b.array());
+        Files.writeString(tmp.resolve("long.hdr"), "ncols " + cols + "\nnrows 2\nxllcorner 0\nyllcorner 0\n"
+                + "cellsize 1\nbyteorder LSBFIRST\n");
+        io.github.jdem846.raster.Dem dem = DemReader.read(flt);
+        for (int c : new int[] {0, 999, 1_048_575, 1_048_576, 1_048_577, cols - 1}) {
+            assertEquals(c % 1000, dem.get(c, 0), "row 0, column " + c);
+            assertEquals(c % 1000 + 0.5f, dem.get(c, 1), "row 1, column " + c);
+        }
+        io.github.jdem846.raster.Dem window = DemReader.read(flt,
+                ReadRequest.of(Window.cells(7, 1, cols - 8, 1)));
+        assertEquals((1_048_583 % 1000) + 0.5f, window.get(1_048_576, 0));
+        assertEquals(((cols - 2) % 1000) + 0.5f, window.get(cols - 9, 0));
+    }
+
+    @Test
     void aGridFloatHeaderOfTwoBillionSquareGivesTheExactExpectedSize() throws IOException {
         Path flt = tmp.resolve("big.flt");
         Files.write(flt, new byte[24]);
