@@ -82,16 +82,15 @@ final class GeoTiffSource implements RasterSource {
                 notices.add("the file has " + bands + " bands; band 1 is read");
             }
             checkCompression(tif, fields);
-            checkNotTruncated(tif, fields);
+            TiffBlocks blocks = TiffBlocks.of(tif, fields, width, height, Files.size(tif));
             GridGeometry geometry = geometry(tif, fields, width, height, notices);
             Double noData = noData(fields, notices);
             ValueScale valueScale = ValueScale.fromGdalMetadata(fields.ascii(TiffFields.GDAL_METADATA), notices);
-            boolean tiled = fields.has(TiffFields.TILE_OFFSETS);
-            int rowBlock = tiled ? fields.intValue(TiffFields.TILE_LENGTH, 1)
-                    : Math.max(1, Math.min(height, fields.intValue(TiffFields.ROWS_PER_STRIP, height)));
+            boolean tiled = blocks.tiled();
+            int rowBlock = blocks.blockHeight();
             DemInfo info = new DemInfo(tif.toString(), DemFormat.GEOTIFF, type, bands, geometry, noData, notices);
             FileChannel channel = FileChannel.open(tif, StandardOpenOption.READ);
-            TiffSubset.Layout layout = layoutOf(fields, width, height, tiled, rowBlock, byteOrder(channel));
+            TiffSubset.Layout layout = layoutOf(fields, blocks, width, height, byteOrder(channel));
             return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled, layout, channel, valueScale);
         } catch (DemFormatException e) {
             closeQuietly(reader, stream);
@@ -163,7 +162,14 @@ final class GeoTiffSource implements RasterSource {
     @Override
     public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
         if (layout != null) {
-            readSubset(col, row, width, rows, dst);
+            try {
+                readSubset(col, row, width, rows, dst);
+            } catch (IndexOutOfBoundsException | NegativeArraySizeException | IllegalArgumentException
+                     | ArithmeticException | java.nio.BufferUnderflowException e) {
+                // what the checks at open did not foresee in a corrupt file: still the file's own error
+                throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                        + " (truncated or corrupt TIFF?): " + describe(e), e);
+            }
             return;
         }
         ImageReadParam param = reader.getDefaultReadParam();
@@ -271,7 +277,13 @@ final class GeoTiffSource implements RasterSource {
         int segment = layout.tiled() ? bw : layout.width();
         for (int by = row / bh * bh; by < row + rows; by += bh) {
             int blockRows = layout.tiled() ? bh : Math.min(bh, layout.height() - by);
-            int expected = segment * blockRows * bytes;
+            long blockBytes = (long) segment * blockRows * bytes;
+            if (blockBytes > MemoryGuard.MAX_ARRAY) {
+                throw new DemFormatException(file, "its " + (layout.tiled() ? "tiles" : "strips") + " hold "
+                        + MemoryGuard.human(blockBytes) + " each, more than one Java array can hold; re-tile it,"
+                        + " e.g. gdal_translate -co TILED=YES in.tif out.tif");
+            }
+            int expected = (int) blockBytes;
             byte[] block = lzw ? new byte[expected] : null; // LZW's output; uncompressed data stay as read
             for (int bx = col / bw * bw; bx < col + width; bx += bw) {
                 int index = by / bh * layout.blocksAcross() + bx / bw;
@@ -311,6 +323,10 @@ final class GeoTiffSource implements RasterSource {
     private byte[] readBlock(long offset, long count) throws IOException {
         if (count > Integer.MAX_VALUE - 8) {
             throw new DemFormatException(file, "a strip or tile of " + count + " bytes is too large to read");
+        }
+        if (offset < 0 || count < 0) { // refused at open (TiffBlocks); kept off FileChannel.read all the same
+            throw new DemFormatException(file, "a strip or tile at offset " + offset + " of " + count
+                    + " bytes lies outside the file");
         }
         byte[] b = new byte[(int) count];
         ByteBuffer buffer = ByteBuffer.wrap(b);
@@ -375,8 +391,7 @@ final class GeoTiffSource implements RasterSource {
      * The layout for {@link TiffSubset}, or null when the compression needs more than the strip or tile bytes
      * (JPEG tables) and subsetting is not attempted.
      */
-    private static TiffSubset.Layout layoutOf(TiffFields f, int width, int height, boolean tiled, int rowBlock,
-                                              ByteOrder order) {
+    private static TiffSubset.Layout layoutOf(TiffFields f, TiffBlocks b, int width, int height, ByteOrder order) {
         int compression = f.intValue(TiffFields.COMPRESSION, 1);
         if (compression != 1 && compression != 5 && compression != 8 && compression != 32946
                 && compression != 32773) {
@@ -389,16 +404,17 @@ final class GeoTiffSource implements RasterSource {
         if (spp > 1 && planar != 2 && (bits.length < spp || formats.length < spp)) {
             return null; // a per-sample array is short: leave the file to the decoder's own rules
         }
-        int blockWidth = tiled ? f.intValue(TiffFields.TILE_WIDTH, width) : width;
-        long[] offsets = f.longs(tiled ? TiffFields.TILE_OFFSETS : TiffFields.STRIP_OFFSETS);
-        long[] counts = f.longs(tiled ? TiffFields.TILE_BYTE_COUNTS : TiffFields.STRIP_BYTE_COUNTS);
-        long blocks = (long) ((width + blockWidth - 1) / blockWidth) * ((height + rowBlock - 1) / rowBlock);
+        int blockWidth = b.blockWidth();
+        int rowBlock = b.blockHeight();
+        long[] offsets = b.offsets();
+        long[] counts = b.byteCounts();
+        long blocks = ((width + (long) blockWidth - 1) / blockWidth) * ((height + (long) rowBlock - 1) / rowBlock);
         if (offsets.length < blocks || counts.length < blocks) {
-            return null;
+            return null; // no byte counts: left to the decoder
         }
         return new TiffSubset.Layout(order, width, height, bits, compression,
                 f.intValue(TiffFields.PHOTOMETRIC, 1), spp, planar, f.intValue(TiffFields.PREDICTOR, 1), formats,
-                f.has(TiffFields.EXTRA_SAMPLES) ? f.longs(TiffFields.EXTRA_SAMPLES) : new long[0], tiled,
+                f.has(TiffFields.EXTRA_SAMPLES) ? f.longs(TiffFields.EXTRA_SAMPLES) : new long[0], b.tiled(),
                 blockWidth, rowBlock, offsets, counts);
     }
 
@@ -515,26 +531,6 @@ final class GeoTiffSource implements RasterSource {
                     + f + "); elevations must be 8/16/32-bit signed or unsigned integers or 32/64-bit floats");
         }
         return t;
-    }
-
-    /** Refuses a file whose strips or tiles reach past its end, before the decoder pads them silently. */
-    private static void checkNotTruncated(Path tif, TiffFields fields) throws IOException {
-        boolean tiled = fields.has(TiffFields.TILE_OFFSETS);
-        long[] offsets = fields.longs(tiled ? TiffFields.TILE_OFFSETS : TiffFields.STRIP_OFFSETS);
-        long[] counts = fields.longs(tiled ? TiffFields.TILE_BYTE_COUNTS : TiffFields.STRIP_BYTE_COUNTS);
-        if (offsets.length == 0) {
-            throw new DemFormatException(tif, "the TIFF has no " + (tiled ? "tile" : "strip") + " offsets");
-        }
-        long end = 0;
-        int n = Math.min(offsets.length, counts.length);
-        for (int i = 0; i < n; i++) {
-            end = Math.max(end, offsets[i] + counts[i]);
-        }
-        long size = Files.size(tif);
-        if (end > size) {
-            throw new DemFormatException(tif, "truncated TIFF: its " + (tiled ? "tiles" : "strips")
-                    + " reach byte " + end + " but the file has " + size + " bytes");
-        }
     }
 
     /** Grid geometry from ModelTransformation or ModelTiepoint + ModelPixelScale, and the GeoKeys. */

@@ -32,6 +32,7 @@ final class TinyTiff {
     private final Map<Integer, Field> fields = new TreeMap<>();
     private byte[] data;
     private Long nextIfd;
+    private long firstIfd = 8;
 
     private TinyTiff(byte[] data) {
         this.data = data;
@@ -86,9 +87,24 @@ final class TinyTiff {
         return this;
     }
 
-    /** Byte offset of the first (only) image directory. */
-    static long ifdOffset() {
-        return 8;
+    /** Sets the header's pointer to the first image directory (which is still written at byte 8). */
+    TinyTiff firstIfd(long offset) {
+        this.firstIfd = offset;
+        return this;
+    }
+
+    /**
+     * Makes the image tiled, {@code tileWidth × tileLength} (TileWidth and TileLength as LONG, or SLONG when one
+     * is negative), every tile pointing at the same data: {@code tiles} offsets and byte counts.
+     */
+    TinyTiff tiled(long tileWidth, long tileLength, int tiles) {
+        long[] offsets = new long[tiles];
+        long[] counts = new long[tiles];
+        java.util.Arrays.fill(offsets, AT_DATA);
+        java.util.Arrays.fill(counts, data.length);
+        int type = tileWidth < 0 || tileLength < 0 ? SLONG : LONG;
+        return remove(273).remove(278).remove(279).set(322, type, tileWidth).set(323, type, tileLength)
+                .set(324, LONG, offsets).set(325, LONG, counts);
     }
 
     byte[] bytes() {
@@ -103,7 +119,7 @@ final class TinyTiff {
         }
         int dataAt = ifdEnd + extra;
         ByteBuffer b = ByteBuffer.allocate(dataAt + data.length).order(ByteOrder.LITTLE_ENDIAN);
-        b.put((byte) 'I').put((byte) 'I').putShort((short) 42).putInt(8);
+        b.put((byte) 'I').put((byte) 'I').putShort((short) 42).putInt((int) firstIfd);
         b.putShort((short) n);
         int outOfLine = ifdEnd;
         for (Map.Entry<Integer, Field> e : fields.entrySet()) {
