@@ -68,8 +68,8 @@ final class BilFormat {
         }
         Double noData = h.firstNumber("nodata", "nodata_value").orElse(null);
         CrsInfo crs = SidecarCrs.resolve(bil, layout, notices);
-        GridGeometry g = new GridGeometry(layout.cols(), layout.rows(), layout.originX(), layout.originY(),
-                layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
+        GridGeometry g = ReaderGeometry.of(hdr, "the header's keys", layout.cols(), layout.rows(),
+                layout.originX(), layout.originY(), layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
         DemInfo info = new DemInfo(bil.toString(), DemFormat.BIL, type, bands, g, noData, notices);
         return new RawRasterSource(info, bil, skip, totalRowBytes, type, order);
     }

@@ -41,8 +41,8 @@ final class EsriAsciiSource implements RasterSource {
         EsriGridLayout layout = EsriGridLayout.of(h, false, notices);
         Double noData = h.firstNumber("nodata_value", "nodata").orElse(null);
         CrsInfo crs = SidecarCrs.resolve(asc, layout, notices);
-        GridGeometry g = new GridGeometry(layout.cols(), layout.rows(), layout.originX(), layout.originY(),
-                layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
+        GridGeometry g = ReaderGeometry.of(asc, "the header's keys", layout.cols(), layout.rows(),
+                layout.originX(), layout.originY(), layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
         return new EsriAsciiSource(asc, new DemInfo(asc.toString(), DemFormat.ESRI_ASCII, SampleType.TEXT, 1, g,
                 noData, notices));
     }

@@ -551,7 +551,9 @@ final class GeoTiffSource implements RasterSource {
         double cellW;
         double cellH;
         boolean georeferenced = true;
+        String source; // named in messages
         if (fields.has(TiffFields.MODEL_TRANSFORMATION)) {
+            source = "ModelTransformation (TIFF tag " + TiffFields.MODEL_TRANSFORMATION + ")";
             double[] m = fields.doubles(TiffFields.MODEL_TRANSFORMATION);
             if (m.length < 8) {
                 throw new DemFormatException(tif, "ModelTransformationTag has " + m.length + " values, not 16");
@@ -570,6 +572,8 @@ final class GeoTiffSource implements RasterSource {
             originX = m[3];
             originY = m[7];
         } else if (fields.has(TiffFields.MODEL_TIEPOINT) && fields.has(TiffFields.MODEL_PIXEL_SCALE)) {
+            source = "ModelTiepoint and ModelPixelScale (TIFF tags " + TiffFields.MODEL_TIEPOINT + ", "
+                    + TiffFields.MODEL_PIXEL_SCALE + ")";
             double[] t = fields.doubles(TiffFields.MODEL_TIEPOINT);
             double[] s = fields.doubles(TiffFields.MODEL_PIXEL_SCALE);
             if (t.length < 6 || s.length < 2) {
@@ -595,6 +599,7 @@ final class GeoTiffSource implements RasterSource {
             notices.add("no georeferencing (no ModelPixelScale/ModelTiepoint/ModelTransformation): cells are"
                     + " 1 × 1 unit with the origin at the north-west corner of row 0");
             georeferenced = false;
+            source = "the image size (no georeferencing)";
             cellW = 1;
             cellH = 1;
             originX = 0;
@@ -607,10 +612,8 @@ final class GeoTiffSource implements RasterSource {
             originX -= cellW / 2;
             originY += cellH / 2;
         }
-        if (!Double.isFinite(originX) || !Double.isFinite(originY)) {
-            throw new DemFormatException(tif, "the georeferencing gives a non-finite origin (" + originX + ", "
-                    + originY + ")");
-        }
+        // each value can be sane and the grid still not: 1e308 × rows overflows, 1e-300 cells at 500000 collapse
+        ReaderGeometry.check(tif, source, width, height, originX, originY, cellW, cellH);
         CrsInfo crs;
         if (!keys.isEmpty()) {
             crs = GeoTiffCrs.resolve(keys, notices);
@@ -620,7 +623,7 @@ final class GeoTiffSource implements RasterSource {
         } else {
             crs = CrsInfo.UNKNOWN;
         }
-        return new GridGeometry(width, height, originX, originY, cellW, cellH, crs, anchor);
+        return ReaderGeometry.of(tif, source, width, height, originX, originY, cellW, cellH, crs, anchor);
     }
 
     /** GDAL_NODATA: a number or "nan"; null when absent. */

@@ -42,8 +42,8 @@ final class GridFloatFormat {
                     + layout.cols() + " × " + layout.rows() + " × 4 = " + expected + " bytes");
         }
         CrsInfo crs = SidecarCrs.resolve(flt, layout, notices);
-        GridGeometry g = new GridGeometry(layout.cols(), layout.rows(), layout.originX(), layout.originY(),
-                layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
+        GridGeometry g = ReaderGeometry.of(hdr, "the header's keys", layout.cols(), layout.rows(),
+                layout.originX(), layout.originY(), layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
         DemInfo info = new DemInfo(flt.toString(), DemFormat.GRIDFLOAT, SampleType.FLOAT32, 1, g, noData, notices);
         return new RawRasterSource(info, flt, 0, (long) layout.cols() * 4, SampleType.FLOAT32, order);
     }
