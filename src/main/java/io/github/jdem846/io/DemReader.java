@@ -82,7 +82,7 @@ public final class DemReader {
             }
             // at full resolution the window's statistics are those of the grid itself: no second pass later
             Dem dem = d == 1 ? Dem.ofNormalized(values, g, noData, stats) : Dem.ofNormalized(values, g, noData);
-            return new LoadedDem(info, dem, stats);
+            return new LoadedDem(source.info(), dem, stats); // with notices learned while reading
         }
     }
 
