@@ -97,7 +97,8 @@ final class GeoTiffSource implements RasterSource {
             throw e;
         } catch (IOException | RuntimeException e) {
             closeQuietly(reader, stream);
-            throw new DemFormatException(tif, "not a readable TIFF (truncated or corrupt?): " + describe(e), e);
+            throw new DemFormatException(tif, "not a readable TIFF (truncated or corrupt?): " + describeDirectory(e),
+                    e);
         }
     }
 
@@ -650,7 +651,18 @@ final class GeoTiffSource implements RasterSource {
     /** The decoder's own message, or the kind of failure when it has none. */
     private static String describe(Throwable e) {
         String m = e.getMessage();
-        return m != null && !m.isBlank() ? m : "the decoder failed (" + e.getClass().getSimpleName() + ")";
+        if (m != null && !m.isBlank()) {
+            return m;
+        }
+        return e instanceof java.io.EOFException ? "the file ends inside the data of a strip or tile"
+                : "the decoder failed (" + e.getClass().getSimpleName() + ")";
+    }
+
+    /** {@link #describe}, for failures while the image directory is read. */
+    private static String describeDirectory(Throwable e) {
+        // TwelveMonkeys stores the EOFException of a field whose values lie outside the file as its value
+        return e instanceof ClassCastException ? "a field of the image directory has values of the wrong type or"
+                + " outside the file" : describe(e);
     }
 
     private static void closeQuietly(ImageReader reader, ImageInputStream stream) {

@@ -111,8 +111,21 @@ final class TiffFields {
             java.math.BigInteger n = new java.math.BigDecimal(text).toBigIntegerExact();
             return n.signum() < 0 ? Long.MIN_VALUE : Long.MAX_VALUE; // beyond the long range
         } catch (NumberFormatException | ArithmeticException e) {
-            throw new IllegalArgumentException("TIFF tag " + tag + " holds '" + text + "', not a whole number", e);
+            throw notANumber(tag, text, "a whole number", e);
         }
+    }
+
+    /**
+     * The failure for a value that is not a number: TwelveMonkeys puts the text of its exception in the tree as
+     * the value when the values lie outside the file.
+     */
+    private static IllegalArgumentException notANumber(int tag, String text, String expected, Exception cause) {
+        int at = text.indexOf("Exception: ");
+        if (text.startsWith("java.") && at > 0) {
+            return new IllegalArgumentException("the values of TIFF tag " + tag + " lie outside the file ("
+                    + text.substring(at + "Exception: ".length()) + ")", cause);
+        }
+        return new IllegalArgumentException("TIFF tag " + tag + " holds '" + text + "', not " + expected, cause);
     }
 
     /** The first value as an int (saturated at the int range), or {@code dflt} when the tag is absent. */
@@ -129,7 +142,7 @@ final class TiffFields {
             try {
                 out[i] = Double.parseDouble(text);
             } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("TIFF tag " + tag + " holds '" + text + "', not a number", e);
+                throw notANumber(tag, text, "a number", e);
             }
         }
         return out;

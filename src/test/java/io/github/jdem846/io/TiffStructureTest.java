@@ -137,6 +137,22 @@ class TiffStructureTest {
     private static final long FIRST_IFD = 8;
 
     @Test
+    void fieldValuesOutsideTheFileAreNamed() throws IOException {
+        byte[] b = TinyTiff.int16(32, 32).set(278, TinyTiff.LONG, 16).set(273, TinyTiff.LONG, TinyTiff.AT_DATA,
+                TinyTiff.AT_DATA).set(279, TinyTiff.LONG, 1024, 1024).bytes();
+        ByteBuffer bb = ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN);
+        for (int i = 0; i < bb.getShort(8); i++) {
+            int at = 10 + 12 * i;
+            if (bb.getShort(at) == 273) {
+                bb.putInt(at + 8, 1_000_000); // the two offsets are read from past the end
+            }
+        }
+        Path tif = tmp.resolve("outside.tif");
+        java.nio.file.Files.write(tif, b);
+        assertRefused(tif, "the values of TIFF tag 273 lie outside the file (");
+    }
+
+    @Test
     void wholeNumberTagsHoldingOtherValuesAreRefused() throws IOException {
         // a type flipped to RATIONAL turns StripOffsets into "a/b" fractions
         byte[] b = TinyTiff.int16(4, 4).bytes();
