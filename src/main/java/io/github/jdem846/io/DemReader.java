@@ -16,8 +16,9 @@ import java.util.Objects;
  * recognised from their content and extension. A read may be limited to a window and decimated by box
  * averaging; only the part of the file needed is decoded where the format allows (TIFF strips/tiles, raw rows).
  *
- * <p>Every failure is a {@link DemFormatException} whose message names the file and the problem. A grid that
- * would not fit in the heap is refused before its array is allocated.
+ * <p>Every failure is a {@link DemFormatException} whose message names the file and the problem. A grid, or a
+ * read buffer, that would not fit in the heap is refused before its array is allocated; a FIFO or device is
+ * refused before anything opens it (a read could block forever).
  */
 public final class DemReader {
 
