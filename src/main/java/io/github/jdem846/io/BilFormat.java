@@ -4,6 +4,7 @@ import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.raster.GridGeometry;
 import java.io.IOException;
+import java.math.BigInteger;
 import java.nio.ByteOrder;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -45,21 +46,30 @@ final class BilFormat {
         ByteOrder order = GridFloatFormat.byteOrder(h, notices);
         long skip = h.nonNegativeLong("skipbytes", 0);
         long bandRowBytes = h.nonNegativeLong("bandrowbytes", (long) layout.cols() * type.bytes());
-        long totalRowBytes = h.nonNegativeLong("totalrowbytes", bands * bandRowBytes);
+        long totalRowBytes = h.nonNegativeLong("totalrowbytes", 0);
+        if (!h.has("totalrowbytes")) {
+            if (MemoryGuard.saturatedMultiply(bands, bandRowBytes) == Long.MAX_VALUE) {
+                throw new DemFormatException(hdr, "nbands " + bands + " × bandrowbytes " + bandRowBytes
+                        + " makes rows of more than 8 EiB");
+            }
+            totalRowBytes = bands * bandRowBytes;
+        }
         if (bandRowBytes < (long) layout.cols() * type.bytes() || totalRowBytes < bandRowBytes) {
             throw new DemFormatException(hdr, "bandrowbytes " + bandRowBytes + " / totalrowbytes " + totalRowBytes
                     + " are too small for " + layout.cols() + " columns of " + bits + " bits");
         }
-        long needed = skip + (layout.rows() - 1) * totalRowBytes + (long) layout.cols() * type.bytes();
+        // exact: header values can make this pass Long.MAX_VALUE; when it fits in the file, every row offset fits
+        BigInteger needed = BigInteger.valueOf(layout.rows() - 1L).multiply(BigInteger.valueOf(totalRowBytes))
+                .add(BigInteger.valueOf(skip)).add(BigInteger.valueOf((long) layout.cols() * type.bytes()));
         long actual = Files.size(bil);
-        if (actual < needed) {
+        if (BigInteger.valueOf(actual).compareTo(needed) < 0) {
             throw new DemFormatException(bil, "is " + actual + " bytes but the header needs at least " + needed
                     + " (skipbytes " + skip + " + " + layout.rows() + " rows of " + totalRowBytes + " bytes)");
         }
         Double noData = h.firstNumber("nodata", "nodata_value").orElse(null);
         CrsInfo crs = SidecarCrs.resolve(bil, layout, notices);
-        GridGeometry g = new GridGeometry(layout.cols(), layout.rows(), layout.originX(), layout.originY(),
-                layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
+        GridGeometry g = ReaderGeometry.of(hdr, "the header's keys", layout.cols(), layout.rows(),
+                layout.originX(), layout.originY(), layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
         DemInfo info = new DemInfo(bil.toString(), DemFormat.BIL, type, bands, g, noData, notices);
         return new RawRasterSource(info, bil, skip, totalRowBytes, type, order);
     }

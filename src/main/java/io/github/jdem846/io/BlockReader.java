@@ -25,16 +25,21 @@ final class BlockReader {
 
     /**
      * Bytes {@link #read} takes for this window beyond its output: the float32 band buffer and what the source
-     * decodes at once ({@link RasterSource#blockBytes}).
+     * decodes at once ({@link RasterSource#blockBytes}); saturated, never negative.
      */
     static long bandBytes(RasterSource source, Window.Cells window, int d) {
-        return 4L * window.width() * bandRows(source.naturalRowBlock(), d, window.width(), window.height(),
-                source.bandCells()) + source.blockBytes();
+        return MemoryGuard.saturatedAdd(MemoryGuard.saturatedMultiply(4L * window.width(),
+                bandRows(source, window, d)), source.blockBytes());
+    }
+
+    /** Rows of the band buffer {@link #read} allocates for this window. */
+    static int bandRows(RasterSource source, Window.Cells window, int d) {
+        return bandRows(source.naturalRowBlock(), d, window.width(), window.height(), source.bandCells());
     }
 
     /** Output width of a window of {@code w} columns at decimation {@code d}. */
     static int outputSize(int w, int d) {
-        return (w + d - 1) / d;
+        return (int) ((w + (long) d - 1) / d);
     }
 
     /**
@@ -124,10 +129,11 @@ final class BlockReader {
     /**
      * Rows per band: a multiple of {@code d} (so blocks never straddle bands) and of the format's natural block
      * (so strips and tiles are decoded about once), near {@code targetCells} cells, at most the window height
-     * rounded up to {@code d}; the whole window when one strip covers it.
+     * rounded up to {@code d}; the whole window when one strip covers it. At most {@link Integer#MAX_VALUE}
+     * (a band that large is refused before it is allocated, {@link MemoryGuard#requireBandFits}).
      */
     static int bandRows(int natural, int d, int w, int h, long targetCells) {
-        long cap = ((long) h + d - 1) / d * d;
+        long cap = Math.min(Integer.MAX_VALUE, ((long) h + d - 1) / d * d);
         if (natural >= h) {
             return (int) cap; // one strip holds the whole window: decode it once
         }

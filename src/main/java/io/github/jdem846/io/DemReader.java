@@ -16,8 +16,9 @@ import java.util.Objects;
  * recognised from their content and extension. A read may be limited to a window and decimated by box
  * averaging; only the part of the file needed is decoded where the format allows (TIFF strips/tiles, raw rows).
  *
- * <p>Every failure is a {@link DemFormatException} whose message names the file and the problem. A grid that
- * would not fit in the heap is refused before its array is allocated.
+ * <p>Every failure is a {@link DemFormatException} whose message names the file and the problem. A grid, or a
+ * read buffer, that would not fit in the heap is refused before its array is allocated; a FIFO or device is
+ * refused before anything opens it (a read could block forever).
  */
 public final class DemReader {
 
@@ -67,9 +68,12 @@ public final class DemReader {
             int d = request.decimation();
             int outW = BlockReader.outputSize(cells.width(), d);
             int outH = BlockReader.outputSize(cells.height(), d);
-            long bandBytes = BlockReader.bandBytes(source, cells, d);
-            MemoryGuard.requireFits(file, outW, outH, bandBytes, request.memoryLimit(), "read a window or a"
-                    + " decimated version, or give Java more heap with -Xmx");
+            String advice = "read a window or a decimated version, or give Java more heap with -Xmx";
+            // the grid alone, then its read buffer alone, then both with the strips or tiles decoded at once
+            MemoryGuard.requireFits(file, outW, outH, 0, request.memoryLimit(), advice);
+            requireBandFits(file, source, cells, d);
+            MemoryGuard.requireFits(file, outW, outH, BlockReader.bandBytes(source, cells, d), request.memoryLimit(),
+                    advice);
             float[] values = new float[outW * outH];
             double noData = info.noDataOrNaN();
             ElevationStatistics stats = readInParts(file, source, cells, d, parallelism, minCellsPerPart,
@@ -81,7 +85,7 @@ public final class DemReader {
             }
             // at full resolution the window's statistics are those of the grid itself: no second pass later
             Dem dem = d == 1 ? Dem.ofNormalized(values, g, noData, stats) : Dem.ofNormalized(values, g, noData);
-            return new LoadedDem(info, dem, stats);
+            return new LoadedDem(source.info(), dem, stats); // with notices learned while reading
         }
     }
 
@@ -107,7 +111,7 @@ public final class DemReader {
                 ? (int) Math.max(1, Math.min(Math.min(parallelism, units), byCells)) : 1;
         long bandBytes = BlockReader.bandBytes(source, cells, d);
         // Each part holds a band buffer of its own: read with fewer parts rather than run out of heap.
-        while (parts > 1 && !MemoryGuard.fits(0, 0, bandBytes * parts)) {
+        while (parts > 1 && !MemoryGuard.fits(0, 0, MemoryGuard.saturatedMultiply(bandBytes, parts))) {
             parts--;
         }
         if (parts == 1) {
@@ -167,6 +171,17 @@ public final class DemReader {
         }
     }
 
+    /**
+     * Refuses a read whose band buffer would not fit, before it is allocated: a file of huge strips or tiles (or
+     * a corrupt one declaring them).
+     */
+    private static void requireBandFits(Path file, RasterSource source, Window.Cells cells, int d)
+            throws DemFormatException {
+        MemoryGuard.requireBandFits(file, cells.width(), BlockReader.bandRows(source, cells, d), "read a window,"
+                + " or give Java more heap with -Xmx; for a file of huge strips, re-tile it, e.g. gdal_translate -co"
+                + " TILED=YES in.tif out.tif");
+    }
+
     private static int gcd(int a, int b) {
         return b == 0 ? a : gcd(b, a % b);
     }
@@ -203,10 +218,10 @@ public final class DemReader {
             DemInfo info = source.info();
             double noData = info.noDataOrNaN();
             Window.Cells all = new Window.Cells(0, 0, info.width(), info.height());
+            requireBandFits(file, source, all, 1);
             MemoryGuard.requireFits(file, 0, 0, BlockReader.bandBytes(source, all, 1), "give Java more heap"
                     + " with -Xmx");
-            return readInParts(file, source, new Window.Cells(0, 0, info.width(), info.height()), 1, parallelism,
-                    minCellsPerPart, (src, part, outRow0) -> BlockReader.read(src, part, 1, noData,
+            return readInParts(file, source, all, 1, parallelism, minCellsPerPart, (src, part, outRow0) -> BlockReader.read(src, part, 1, noData,
                             (row, v) -> { }));
         }
     }

@@ -17,12 +17,14 @@ import java.util.Locale;
  * optional {@code NODATA_value}) followed by {@code nrows × ncols} decimal numbers, north row first, separated by
  * any white space. Text can only be read in order: rows are parsed forward (values outside the columns asked for,
  * and rows before them, are passed over unparsed), and a read of an earlier row starts over from the top of the
- * file.
+ * file. Values after the last row are ignored; a read that reaches the last row counts them and adds a notice to
+ * {@link #info()}.
  */
 final class EsriAsciiSource implements RasterSource {
 
     private final Path file;
-    private final DemInfo info;
+    private DemInfo info; // gains a notice when values follow the grid
+    private boolean restCounted;
     private Tokens tokens;
     private long nextRow; // row the tokenizer stands at
 
@@ -41,8 +43,8 @@ final class EsriAsciiSource implements RasterSource {
         EsriGridLayout layout = EsriGridLayout.of(h, false, notices);
         Double noData = h.firstNumber("nodata_value", "nodata").orElse(null);
         CrsInfo crs = SidecarCrs.resolve(asc, layout, notices);
-        GridGeometry g = new GridGeometry(layout.cols(), layout.rows(), layout.originX(), layout.originY(),
-                layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
+        GridGeometry g = ReaderGeometry.of(asc, "the header's keys", layout.cols(), layout.rows(),
+                layout.originX(), layout.originY(), layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
         return new EsriAsciiSource(asc, new DemInfo(asc.toString(), DemFormat.ESRI_ASCII, SampleType.TEXT, 1, g,
                 noData, notices));
     }
@@ -77,6 +79,22 @@ final class EsriAsciiSource implements RasterSource {
                 }
             }
         }
+        if (nextRow == info.height() && !restCounted) {
+            restCounted = true;
+            noteValuesAfterTheGrid(tokens.countRest());
+        }
+    }
+
+    /** Adds a notice to {@link #info} when {@code extra} words follow the grid's nrows × ncols values. */
+    private void noteValuesAfterTheGrid(long extra) {
+        if (extra == 0) {
+            return;
+        }
+        List<String> notices = new ArrayList<>(info.notices());
+        notices.add(extra + (extra == 1 ? " value" : " values") + " after the grid's nrows × ncols = "
+                + info.height() + " × " + info.width() + " were ignored (is the header's nrows or ncols too small?)");
+        info = new DemInfo(info.source(), info.format(), info.dataType(), info.bands(), info.geometry(),
+                info.declaredNoData(), notices);
     }
 
     @Override
@@ -147,6 +165,19 @@ final class EsriAsciiSource implements RasterSource {
                 throw truncated(row, col);
             }
             valuesRead++;
+        }
+
+        /** Counts the words left up to the end of the file, passing over them. */
+        long countRest() throws IOException {
+            long n = 0;
+            if (pushedBack != null) {
+                pushedBack = null;
+                n++;
+            }
+            while (readWord()) {
+                n++;
+            }
+            return n;
         }
 
         private DemFormatException truncated(long row, int col) {

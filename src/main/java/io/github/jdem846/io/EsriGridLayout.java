@@ -34,15 +34,23 @@ record EsriGridLayout(int cols, int rows, double originX, double originY, double
         int rows = h.positiveInt("nrows");
         double cw;
         double ch;
+        String cellKeyX = null; // null: ESRI's default
+        String cellKeyY = null;
         if (h.has("cellsize")) {
             cw = h.positive("cellsize");
             ch = cw;
+            cellKeyX = "cellsize";
+            cellKeyY = "cellsize";
         } else if (h.has("xdim") || h.has("ydim")) {
             cw = h.positive("xdim");
             ch = h.positive("ydim");
+            cellKeyX = "xdim";
+            cellKeyY = "ydim";
         } else if (h.has("dx") || h.has("dy")) {
             cw = h.positive("dx");
             ch = h.positive("dy");
+            cellKeyX = "dx";
+            cellKeyY = "dy";
         } else if (bilDefaults) {
             cw = 1;
             ch = 1;
@@ -72,12 +80,14 @@ record EsriGridLayout(int cols, int rows, double originX, double originY, double
         }
 
         double originY;
+        double southY; // for the check below: from the key itself where it names the south edge
         String yKey = h.firstPresent("yllcorner", "yllcenter", "ulymap").orElse(null);
         if (yKey == null) {
             if (!bilDefaults) {
                 throw new DemFormatException(h.file(), "header key 'yllcorner' is missing (or give 'yllcenter')");
             }
             originY = (rows - 1) * ch + ch / 2;
+            southY = originY - rows * ch;
             anchor = PixelAnchor.CENTER;
             notices.add("no ULYMAP in the header: placed at y = nrows − 1 (ESRI's default)");
         } else {
@@ -87,10 +97,32 @@ record EsriGridLayout(int cols, int rows, double originX, double originY, double
                 case "yllcenter" -> y - ch / 2 + rows * ch;
                 default -> y + ch / 2; // ulymap: centre of the upper-left cell
             };
+            southY = switch (yKey) {
+                case "yllcorner" -> y;
+                case "yllcenter" -> y - ch / 2;
+                default -> originY - rows * ch;
+            };
             if (!yKey.equals("yllcorner")) {
                 anchor = PixelAnchor.CENTER;
             }
         }
+        // each key can be sane and the grid still not: 1e308 × nrows overflows, 1e-300 cells at 500000 collapse
+        ReaderGeometry.checkEdges(h.file(), keys(xKey, "ncols", cellKeyX), keys(yKey, "nrows", cellKeyY), originX,
+                originX + cols * cw, southY, originY, cw, ch);
         return new EsriGridLayout(cols, rows, originX, originY, cw, ch, anchor);
+    }
+
+    /** "header keys 'xllcorner', 'ncols' and 'cellsize'", leaving out keys the header does not have. */
+    private static String keys(String... keys) {
+        java.util.List<String> present = new java.util.ArrayList<>();
+        for (String k : keys) {
+            if (k != null) {
+                present.add("'" + k + "'");
+            }
+        }
+        int last = present.size() - 1;
+        String list = last == 0 ? present.get(0)
+                : String.join(", ", present.subList(0, last)) + " and " + present.get(last);
+        return "header key" + (last == 0 ? " " : "s ") + list;
     }
 }

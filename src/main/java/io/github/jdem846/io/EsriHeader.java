@@ -27,8 +27,9 @@ final class EsriHeader {
         this.values = values;
     }
 
-    /** Reads a header file. */
+    /** Reads a header file (refusing a FIFO or device, whose read could block). */
     static EsriHeader read(Path hdr, String whatNeedsIt) throws DemFormatException {
+        RegularFiles.require(hdr, "a header");
         List<String> lines;
         try {
             lines = Files.readAllLines(hdr, StandardCharsets.ISO_8859_1);

@@ -11,7 +11,8 @@ import java.util.Locale;
 /**
  * Which format a file is, from its first bytes (TIFF and BigTIFF magic numbers, an ASCII grid's {@code ncols})
  * and its extension ({@code .flt}, {@code .bil}, {@code .hgt}, {@code .asc}; a {@code .hdr} stands for the
- * {@code .flt} or {@code .bil} beside it). Also refuses what is not a file: missing, a directory, empty.
+ * {@code .flt} or {@code .bil} beside it). Also refuses what is not a DEM file: missing, a directory, a FIFO or
+ * device (before opening it, which could block), empty.
  */
 final class FormatDetector {
 
@@ -29,6 +30,8 @@ final class FormatDetector {
         if (!Files.exists(file)) {
             throw new DemFormatException(file, "no such file");
         }
+        // before anything opens it: a FIFO without a writer or a character device would block the read
+        RegularFiles.require(file, "a DEM");
         if (!Files.isReadable(file)) {
             throw new DemFormatException(file, "cannot be read (permission denied)");
         }
@@ -36,7 +39,7 @@ final class FormatDetector {
         if (ext.equals("hdr")) {
             for (String dataExt : new String[] {"flt", "bil"}) {
                 Path data = SidecarCrs.sibling(file, dataExt);
-                if (Files.isRegularFile(data)) {
+                if (Files.exists(data)) {
                     return detect(data);
                 }
             }

@@ -85,24 +85,24 @@ final class GeoTiffSource implements RasterSource {
                 notices.add("the file has " + bands + " bands; band 1 is read");
             }
             checkCompression(tif, fields);
-            checkNotTruncated(tif, fields);
+            TiffBlocks blocks = TiffBlocks.of(tif, fields, width, height, Files.size(tif));
             GridGeometry geometry = geometry(tif, fields, width, height, notices);
             Double noData = noData(fields, notices);
             ValueScale valueScale = ValueScale.fromGdalMetadata(fields.ascii(TiffFields.GDAL_METADATA), notices);
-            boolean tiled = fields.has(TiffFields.TILE_OFFSETS);
-            int rowBlock = tiled ? fields.intValue(TiffFields.TILE_LENGTH, 1)
-                    : Math.max(1, Math.min(height, fields.intValue(TiffFields.ROWS_PER_STRIP, height)));
+            boolean tiled = blocks.tiled();
+            int rowBlock = blocks.blockHeight();
             DemInfo info = new DemInfo(tif.toString(), DemFormat.GEOTIFF, type, bands, geometry, noData, notices);
             FileChannel channel = FileChannel.open(tif, StandardOpenOption.READ);
-            TiffSubset.Layout layout = layoutOf(fields, width, height, tiled, rowBlock, byteOrder(channel));
+            TiffSubset.Layout layout = layoutOf(fields, blocks, width, height, byteOrder(channel));
             return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled, layout, channel, valueScale,
-                    blockBytes(fields, width, tiled, rowBlock));
+                    blockBytes(fields, blocks, width));
         } catch (DemFormatException e) {
             closeQuietly(reader, stream);
             throw e;
         } catch (IOException | RuntimeException e) {
             closeQuietly(reader, stream);
-            throw new DemFormatException(tif, "not a readable TIFF (truncated or corrupt?): " + describe(e), e);
+            throw new DemFormatException(tif, "not a readable TIFF (truncated or corrupt?): " + describeDirectory(e),
+                    e);
         }
     }
 
@@ -141,18 +141,18 @@ final class GeoTiffSource implements RasterSource {
         return blockBytes;
     }
 
-    private static long blockBytes(TiffFields fields, int width, boolean tiled, int rowBlock) {
-        long across = tiled ? Math.max(1, fields.intValue(TiffFields.TILE_WIDTH, width)) : width;
+    private static long blockBytes(TiffFields fields, TiffBlocks blocks, int width) {
+        long across = blocks.tiled() ? blocks.blockWidth() : width;
         long bitsPerPixel = 0;
-        for (long bits : fields.has(TiffFields.BITS_PER_SAMPLE) ? fields.longs(TiffFields.BITS_PER_SAMPLE)
-                : new long[] {1}) {
-            bitsPerPixel += Math.max(0, Math.min(bits, 64));
+        long[] bits = fields.has(TiffFields.BITS_PER_SAMPLE) ? fields.longs(TiffFields.BITS_PER_SAMPLE)
+                : new long[] {1};
+        for (long b : bits) {
+            bitsPerPixel += Math.max(0, Math.min(b, 64));
         }
-        int spp = Math.max(1, fields.intValue(TiffFields.SAMPLES_PER_PIXEL, 1));
-        if (fields.has(TiffFields.BITS_PER_SAMPLE) && fields.longs(TiffFields.BITS_PER_SAMPLE).length == 1) {
-            bitsPerPixel *= spp;
+        if (bits.length == 1) {
+            bitsPerPixel *= Math.max(1, Math.min(fields.intValue(TiffFields.SAMPLES_PER_PIXEL, 1), 1 << 16));
         }
-        return 2 * across * rowBlock * ((bitsPerPixel + 7) / 8);
+        return MemoryGuard.saturatedMultiply(2 * across * blocks.blockHeight(), (bitsPerPixel + 7) / 8);
     }
 
     @Override
@@ -187,7 +187,14 @@ final class GeoTiffSource implements RasterSource {
     @Override
     public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
         if (layout != null) {
-            readSubset(col, row, width, rows, dst);
+            try {
+                readSubset(col, row, width, rows, dst);
+            } catch (IndexOutOfBoundsException | NegativeArraySizeException | IllegalArgumentException
+                     | ArithmeticException | java.nio.BufferUnderflowException e) {
+                // what the checks at open did not foresee in a corrupt file: still the file's own error
+                throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                        + " (truncated or corrupt TIFF?): " + describe(e), e);
+            }
             return;
         }
         ImageReadParam param = reader.getDefaultReadParam();
@@ -295,7 +302,13 @@ final class GeoTiffSource implements RasterSource {
         int segment = layout.tiled() ? bw : layout.width();
         for (int by = row / bh * bh; by < row + rows; by += bh) {
             int blockRows = layout.tiled() ? bh : Math.min(bh, layout.height() - by);
-            int expected = segment * blockRows * bytes;
+            long blockBytes = (long) segment * blockRows * bytes;
+            if (blockBytes > MemoryGuard.MAX_ARRAY) {
+                throw new DemFormatException(file, "its " + (layout.tiled() ? "tiles" : "strips") + " hold "
+                        + MemoryGuard.human(blockBytes) + " each, more than one Java array can hold; re-tile it,"
+                        + " e.g. gdal_translate -co TILED=YES in.tif out.tif");
+            }
+            int expected = (int) blockBytes;
             byte[] block = lzw ? new byte[expected] : null; // LZW's output; uncompressed data stay as read
             for (int bx = col / bw * bw; bx < col + width; bx += bw) {
                 int index = by / bh * layout.blocksAcross() + bx / bw;
@@ -335,6 +348,10 @@ final class GeoTiffSource implements RasterSource {
     private byte[] readBlock(long offset, long count) throws IOException {
         if (count > Integer.MAX_VALUE - 8) {
             throw new DemFormatException(file, "a strip or tile of " + count + " bytes is too large to read");
+        }
+        if (offset < 0 || count < 0) { // refused at open (TiffBlocks); kept off FileChannel.read all the same
+            throw new DemFormatException(file, "a strip or tile at offset " + offset + " of " + count
+                    + " bytes lies outside the file");
         }
         byte[] b = new byte[(int) count];
         ByteBuffer buffer = ByteBuffer.wrap(b);
@@ -399,8 +416,7 @@ final class GeoTiffSource implements RasterSource {
      * The layout for {@link TiffSubset}, or null when the compression needs more than the strip or tile bytes
      * (JPEG tables) and subsetting is not attempted.
      */
-    private static TiffSubset.Layout layoutOf(TiffFields f, int width, int height, boolean tiled, int rowBlock,
-                                              ByteOrder order) {
+    private static TiffSubset.Layout layoutOf(TiffFields f, TiffBlocks b, int width, int height, ByteOrder order) {
         int compression = f.intValue(TiffFields.COMPRESSION, 1);
         if (compression != 1 && compression != 5 && compression != 8 && compression != 32946
                 && compression != 32773) {
@@ -413,16 +429,17 @@ final class GeoTiffSource implements RasterSource {
         if (spp > 1 && planar != 2 && (bits.length < spp || formats.length < spp)) {
             return null; // a per-sample array is short: leave the file to the decoder's own rules
         }
-        int blockWidth = tiled ? f.intValue(TiffFields.TILE_WIDTH, width) : width;
-        long[] offsets = f.longs(tiled ? TiffFields.TILE_OFFSETS : TiffFields.STRIP_OFFSETS);
-        long[] counts = f.longs(tiled ? TiffFields.TILE_BYTE_COUNTS : TiffFields.STRIP_BYTE_COUNTS);
-        long blocks = (long) ((width + blockWidth - 1) / blockWidth) * ((height + rowBlock - 1) / rowBlock);
+        int blockWidth = b.blockWidth();
+        int rowBlock = b.blockHeight();
+        long[] offsets = b.offsets();
+        long[] counts = b.byteCounts();
+        long blocks = ((width + (long) blockWidth - 1) / blockWidth) * ((height + (long) rowBlock - 1) / rowBlock);
         if (offsets.length < blocks || counts.length < blocks) {
-            return null;
+            return null; // no byte counts: left to the decoder
         }
         return new TiffSubset.Layout(order, width, height, bits, compression,
                 f.intValue(TiffFields.PHOTOMETRIC, 1), spp, planar, f.intValue(TiffFields.PREDICTOR, 1), formats,
-                f.has(TiffFields.EXTRA_SAMPLES) ? f.longs(TiffFields.EXTRA_SAMPLES) : new long[0], tiled,
+                f.has(TiffFields.EXTRA_SAMPLES) ? f.longs(TiffFields.EXTRA_SAMPLES) : new long[0], b.tiled(),
                 blockWidth, rowBlock, offsets, counts);
     }
 
@@ -541,26 +558,6 @@ final class GeoTiffSource implements RasterSource {
         return t;
     }
 
-    /** Refuses a file whose strips or tiles reach past its end, before the decoder pads them silently. */
-    private static void checkNotTruncated(Path tif, TiffFields fields) throws IOException {
-        boolean tiled = fields.has(TiffFields.TILE_OFFSETS);
-        long[] offsets = fields.longs(tiled ? TiffFields.TILE_OFFSETS : TiffFields.STRIP_OFFSETS);
-        long[] counts = fields.longs(tiled ? TiffFields.TILE_BYTE_COUNTS : TiffFields.STRIP_BYTE_COUNTS);
-        if (offsets.length == 0) {
-            throw new DemFormatException(tif, "the TIFF has no " + (tiled ? "tile" : "strip") + " offsets");
-        }
-        long end = 0;
-        int n = Math.min(offsets.length, counts.length);
-        for (int i = 0; i < n; i++) {
-            end = Math.max(end, offsets[i] + counts[i]);
-        }
-        long size = Files.size(tif);
-        if (end > size) {
-            throw new DemFormatException(tif, "truncated TIFF: its " + (tiled ? "tiles" : "strips")
-                    + " reach byte " + end + " but the file has " + size + " bytes");
-        }
-    }
-
     /** Grid geometry from ModelTransformation or ModelTiepoint + ModelPixelScale, and the GeoKeys. */
     private static GridGeometry geometry(Path tif, TiffFields fields, int width, int height, List<String> notices)
             throws DemFormatException {
@@ -579,7 +576,9 @@ final class GeoTiffSource implements RasterSource {
         double cellW;
         double cellH;
         boolean georeferenced = true;
+        String source; // named in messages
         if (fields.has(TiffFields.MODEL_TRANSFORMATION)) {
+            source = "ModelTransformation (TIFF tag " + TiffFields.MODEL_TRANSFORMATION + ")";
             double[] m = fields.doubles(TiffFields.MODEL_TRANSFORMATION);
             if (m.length < 8) {
                 throw new DemFormatException(tif, "ModelTransformationTag has " + m.length + " values, not 16");
@@ -598,6 +597,8 @@ final class GeoTiffSource implements RasterSource {
             originX = m[3];
             originY = m[7];
         } else if (fields.has(TiffFields.MODEL_TIEPOINT) && fields.has(TiffFields.MODEL_PIXEL_SCALE)) {
+            source = "ModelTiepoint and ModelPixelScale (TIFF tags " + TiffFields.MODEL_TIEPOINT + ", "
+                    + TiffFields.MODEL_PIXEL_SCALE + ")";
             double[] t = fields.doubles(TiffFields.MODEL_TIEPOINT);
             double[] s = fields.doubles(TiffFields.MODEL_PIXEL_SCALE);
             if (t.length < 6 || s.length < 2) {
@@ -623,6 +624,7 @@ final class GeoTiffSource implements RasterSource {
             notices.add("no georeferencing (no ModelPixelScale/ModelTiepoint/ModelTransformation): cells are"
                     + " 1 × 1 unit with the origin at the north-west corner of row 0");
             georeferenced = false;
+            source = "the image size (no georeferencing)";
             cellW = 1;
             cellH = 1;
             originX = 0;
@@ -635,10 +637,8 @@ final class GeoTiffSource implements RasterSource {
             originX -= cellW / 2;
             originY += cellH / 2;
         }
-        if (!Double.isFinite(originX) || !Double.isFinite(originY)) {
-            throw new DemFormatException(tif, "the georeferencing gives a non-finite origin (" + originX + ", "
-                    + originY + ")");
-        }
+        // each value can be sane and the grid still not: 1e308 × rows overflows, 1e-300 cells at 500000 collapse
+        ReaderGeometry.check(tif, source, width, height, originX, originY, cellW, cellH);
         CrsInfo crs;
         if (!keys.isEmpty()) {
             crs = GeoTiffCrs.resolve(keys, notices);
@@ -648,7 +648,7 @@ final class GeoTiffSource implements RasterSource {
         } else {
             crs = CrsInfo.UNKNOWN;
         }
-        return new GridGeometry(width, height, originX, originY, cellW, cellH, crs, anchor);
+        return ReaderGeometry.of(tif, source, width, height, originX, originY, cellW, cellH, crs, anchor);
     }
 
     /** GDAL_NODATA: a number or "nan"; null when absent. */
@@ -675,7 +675,18 @@ final class GeoTiffSource implements RasterSource {
     /** The decoder's own message, or the kind of failure when it has none. */
     private static String describe(Throwable e) {
         String m = e.getMessage();
-        return m != null && !m.isBlank() ? m : "the decoder failed (" + e.getClass().getSimpleName() + ")";
+        if (m != null && !m.isBlank()) {
+            return m;
+        }
+        return e instanceof java.io.EOFException ? "the file ends inside the data of a strip or tile"
+                : "the decoder failed (" + e.getClass().getSimpleName() + ")";
+    }
+
+    /** {@link #describe}, for failures while the image directory is read. */
+    private static String describeDirectory(Throwable e) {
+        // TwelveMonkeys stores the EOFException of a field whose values lie outside the file as its value
+        return e instanceof ClassCastException ? "a field of the image directory has values of the wrong type or"
+                + " outside the file" : describe(e);
     }
 
     private static void closeQuietly(ImageReader reader, ImageInputStream stream) {

@@ -4,6 +4,7 @@ import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.raster.GridGeometry;
 import java.io.IOException;
+import java.math.BigInteger;
 import java.nio.ByteOrder;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -32,15 +33,17 @@ final class GridFloatFormat {
         ByteOrder order = byteOrder(h, notices);
         Double noData = h.firstNumber("nodata_value", "nodata").orElse(null);
 
-        long expected = (long) layout.cols() * layout.rows() * 4;
+        // exact: ncols × nrows × 4 can pass Long.MAX_VALUE
+        BigInteger expected = BigInteger.valueOf(layout.cols()).multiply(BigInteger.valueOf(layout.rows()))
+                .multiply(BigInteger.valueOf(4));
         long actual = Files.size(flt);
-        if (actual != expected) {
+        if (!expected.equals(BigInteger.valueOf(actual))) {
             throw new DemFormatException(flt, "is " + actual + " bytes but the header's ncols × nrows × 4 = "
                     + layout.cols() + " × " + layout.rows() + " × 4 = " + expected + " bytes");
         }
         CrsInfo crs = SidecarCrs.resolve(flt, layout, notices);
-        GridGeometry g = new GridGeometry(layout.cols(), layout.rows(), layout.originX(), layout.originY(),
-                layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
+        GridGeometry g = ReaderGeometry.of(hdr, "the header's keys", layout.cols(), layout.rows(),
+                layout.originX(), layout.originY(), layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
         DemInfo info = new DemInfo(flt.toString(), DemFormat.GRIDFLOAT, SampleType.FLOAT32, 1, g, noData, notices);
         return new RawRasterSource(info, flt, 0, (long) layout.cols() * 4, SampleType.FLOAT32, order);
     }

@@ -4,11 +4,15 @@ import io.github.jdem846.raster.DemFormatException;
 import java.nio.file.Path;
 import java.util.Locale;
 
-/** Refuses, before allocating, a grid whose float32 array would not fit in the Java heap. */
+/**
+ * Refuses, before allocating, a grid or a read buffer whose float32 array would not fit in one Java array or in
+ * the Java heap. Sizes are computed without overflow (in {@code long} where they fit, saturating or in
+ * {@code double} where they may not), so messages give true figures.
+ */
 final class MemoryGuard {
 
     /** Largest Java array length the JVM allows in practice. */
-    private static final long MAX_ARRAY = Integer.MAX_VALUE - 8L;
+    static final long MAX_ARRAY = Integer.MAX_VALUE - 8L;
 
     private MemoryGuard() {
     }
@@ -31,8 +35,9 @@ final class MemoryGuard {
     static void requireFits(Path file, int width, int height, long workBytes, long limit, String advice)
             throws DemFormatException {
         long cells = (long) width * height;
-        long bytes = cells * Float.BYTES;
-        if (limit < Long.MAX_VALUE && cells <= MAX_ARRAY && bytes + workBytes > limit) {
+        long bytes = saturatedMultiply(cells, Float.BYTES);
+        long need = saturatedAdd(bytes, workBytes);
+        if (limit < Long.MAX_VALUE && cells <= MAX_ARRAY && need > limit) {
             throw new DemFormatException(file, needs(width, height, bytes, workBytes)
                     + ", more than the read's limit of " + human(limit));
         }
@@ -41,12 +46,33 @@ final class MemoryGuard {
         if (cells > MAX_ARRAY) {
             throw new DemFormatException(file, "a " + width + " × " + height + " grid has " + cells
                     + " cells, more than one Java array can hold (" + MAX_ARRAY + "); it would need "
-                    + human(bytes) + " (" + advice + ")");
+                    + human(cells * (double) Float.BYTES) + " (" + advice + ")");
         }
-        if (bytes + workBytes > available) {
+        if (need > available) {
             throw new DemFormatException(file, needs(width, height, bytes, workBytes)
                     + ", but the Java heap allows at most " + human(max) + " (Runtime.maxMemory()), "
                     + human(Math.max(0, available)) + " of it free; " + advice);
+        }
+    }
+
+    /**
+     * Checks that a read buffer of {@code width × rows} float32 cells (a band of whole strips or tiles) fits in
+     * one Java array and in the heap now available.
+     *
+     * @throws DemFormatException saying how large the buffer is and why it is needed
+     */
+    static void requireBandFits(Path file, int width, long rows, String advice) throws DemFormatException {
+        double cells = (double) width * rows;
+        String what = "reading it takes " + width + " × " + rows + " cells at a time (whole strips or tiles, or"
+                + " the rows of a decimation block), " + human(cells * Float.BYTES) + " as float32";
+        if (cells > MAX_ARRAY) {
+            throw new DemFormatException(file, what + ", more than one Java array can hold (" + MAX_ARRAY
+                    + " cells); " + advice);
+        }
+        long available = available();
+        if ((long) cells * Float.BYTES > available) {
+            throw new DemFormatException(file, what + ", but the Java heap has " + human(Math.max(0, available))
+                    + " free of at most " + human(Runtime.getRuntime().maxMemory()) + "; " + advice);
         }
     }
 
@@ -67,7 +93,20 @@ final class MemoryGuard {
     /** True when {@code width × height} float32 cells plus {@code workBytes} fit in the heap now available. */
     static boolean fits(int width, int height, long workBytes) {
         long cells = (long) width * height;
-        return cells <= MAX_ARRAY && cells * Float.BYTES + workBytes <= available();
+        return cells <= MAX_ARRAY && saturatedAdd(cells * Float.BYTES, workBytes) <= available();
+    }
+
+    /** {@code a × b} for non-negative factors, {@link Long#MAX_VALUE} when it overflows. */
+    static long saturatedMultiply(long a, long b) {
+        long hi = Math.multiplyHigh(a, b);
+        long lo = a * b;
+        return hi != 0 || lo < 0 ? Long.MAX_VALUE : lo;
+    }
+
+    /** {@code a + b} for non-negative terms, {@link Long#MAX_VALUE} when it overflows. */
+    static long saturatedAdd(long a, long b) {
+        long s = a + b;
+        return s < 0 ? Long.MAX_VALUE : s;
     }
 
     /** Heap bytes not in use now (the maximum heap minus what is allocated and not free). */
@@ -76,15 +115,23 @@ final class MemoryGuard {
         return rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
     }
 
-    /** Bytes in binary units, e.g. "37.3 GiB". */
+    /** Bytes in binary units, e.g. "37.3 GiB"; {@link Long#MAX_VALUE} (a saturated size) is "more than 8 EiB". */
     static String human(long bytes) {
-        String[] units = {"bytes", "KiB", "MiB", "GiB", "TiB"};
+        if (bytes == Long.MAX_VALUE) {
+            return "more than 8 EiB";
+        }
+        return bytes < 1024 ? bytes + " bytes" : human((double) bytes);
+    }
+
+    /** Bytes in binary units for sizes that may exceed a {@code long}, e.g. "16.0 EiB". */
+    static String human(double bytes) {
+        String[] units = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB", "ZiB", "YiB"};
         double v = bytes;
         int u = 0;
         while (v >= 1024 && u < units.length - 1) {
             v /= 1024;
             u++;
         }
-        return u == 0 ? bytes + " bytes" : String.format(Locale.ROOT, "%.1f %s", v, units[u]);
+        return u == 0 ? (long) bytes + " bytes" : String.format(Locale.ROOT, "%.1f %s", v, units[u]);
     }
 }

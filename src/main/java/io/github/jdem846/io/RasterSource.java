@@ -10,7 +10,10 @@ import java.io.IOException;
  */
 interface RasterSource extends Closeable {
 
-    /** The header information (no pixels decoded). */
+    /**
+     * The header information (no pixels decoded); after a read, with any notices learned while reading (values
+     * after the end of an ASCII grid).
+     */
     DemInfo info();
 
     /**

@@ -51,24 +51,43 @@ final class RawRasterSource implements RasterSource {
         return info;
     }
 
+    /** Bytes read at once when rows are adjacent in the file; a longer row is read in pieces of this size. */
+    private static final int CHUNK = 1 << 22;
+
     @Override
     public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
         int bytes = type.bytes();
-        boolean contiguous = col == 0 && width == info.width() && rowStride == (long) width * bytes;
+        long rowBytes = (long) width * bytes;
+        boolean contiguous = col == 0 && width == info.width() && rowStride == rowBytes;
+        if (rowBytes > CHUNK) {
+            // a row longer than a chunk (its byte count may pass 2³¹): column pieces, row by row
+            int pieceCells = CHUNK / bytes;
+            for (int r = 0; r < rows; r++) {
+                for (int c = 0; c < width; c += pieceCells) {
+                    int n = Math.min(pieceCells, width - c);
+                    read(offset + (long) (row + r) * rowStride + (long) (col + c) * bytes, n * bytes);
+                    decode(buffer, dst, r * width + c, n);
+                }
+            }
+            return;
+        }
         // Read whole rows in one go when they are adjacent in the file, otherwise row by row.
-        int rowsPerRead = contiguous ? Math.max(1, Math.min(rows, (1 << 22) / Math.max(1, width * bytes))) : 1;
+        int rowsPerRead = contiguous ? Math.max(1, Math.min(rows, CHUNK / Math.max(1, (int) rowBytes))) : 1;
         for (int r = 0; r < rows; r += rowsPerRead) {
             int n = Math.min(rowsPerRead, rows - r);
-            int length = n * width * bytes;
-            if (buffer.capacity() < length) {
-                buffer = ByteBuffer.allocate(length);
-            }
-            buffer.clear().limit(length);
-            long position = offset + (long) (row + r) * rowStride + (long) col * bytes;
-            readFully(position);
-            buffer.flip().order(order);
+            read(offset + (long) (row + r) * rowStride + (long) col * bytes, n * (int) rowBytes);
             decode(buffer, dst, r * width, n * width);
         }
+    }
+
+    /** Reads {@code length} bytes at {@code position} into {@link #buffer}, flipped for decoding. */
+    private void read(long position, int length) throws IOException {
+        if (buffer.capacity() < length) {
+            buffer = ByteBuffer.allocate(length);
+        }
+        buffer.clear().limit(length);
+        readFully(position);
+        buffer.flip().order(order);
     }
 
     private void readFully(long position) throws IOException {

@@ -20,14 +20,17 @@ final class SidecarCrs {
     private SidecarCrs() {
     }
 
-    /** The {@code .prj} beside {@code dataFile} (same base name; ".prj" or ".PRJ"), or null. */
+    /**
+     * The {@code .prj} beside {@code dataFile} (same base name; ".prj" or ".PRJ"), or null. It may be something
+     * other than a regular file (see {@link RegularFiles}).
+     */
     static Path prjOf(Path dataFile) {
         String name = dataFile.getFileName().toString();
         int dot = name.lastIndexOf('.');
         String base = dot > 0 ? name.substring(0, dot) : name;
         for (String ext : new String[] {".prj", ".PRJ", ".Prj"}) {
             Path p = dataFile.resolveSibling(base + ext);
-            if (Files.isRegularFile(p)) {
+            if (Files.exists(p) && !Files.isDirectory(p)) {
                 return p;
             }
         }
@@ -43,6 +46,13 @@ final class SidecarCrs {
      */
     static CrsInfo resolve(Path dataFile, EsriGridLayout layout, List<String> notices) {
         Path prj = prjOf(dataFile);
+        String kind = prj != null ? RegularFiles.otherKind(prj) : null;
+        if (kind != null) {
+            // a FIFO or device: reading it could block
+            notices.add(prj.getFileName() + " is " + kind + ", not a regular file, and was not read, so the CRS is"
+                    + " unknown");
+            return CrsInfo.UNKNOWN;
+        }
         if (prj != null) {
             try {
                 String text = Files.readString(prj, StandardCharsets.ISO_8859_1);

@@ -86,26 +86,64 @@ final class TiffFields {
         return fields.containsKey(tag) && !fields.get(tag).isEmpty();
     }
 
-    /** The values as longs (rationals "a/b" are not expected in the tags read here). */
+    /**
+     * The values as longs; whole numbers beyond the long range (a corrupt BigTIFF LONG8) saturate.
+     *
+     * @throws IllegalArgumentException naming the tag when a value is not a whole number (a corrupt type: the
+     *                                  tags read here are integers)
+     */
     long[] longs(int tag) {
         List<String> v = fields.getOrDefault(tag, List.of());
         long[] out = new long[v.size()];
         for (int i = 0; i < out.length; i++) {
-            out[i] = Long.parseLong(v.get(i).trim());
+            String text = v.get(i).trim();
+            try {
+                out[i] = Long.parseLong(text);
+            } catch (NumberFormatException e) {
+                out[i] = wholeNumber(tag, text);
+            }
         }
         return out;
     }
 
-    /** The first value as an int, or {@code dflt} when the tag is absent. */
-    int intValue(int tag, int dflt) {
-        return has(tag) ? (int) longs(tag)[0] : dflt;
+    private static long wholeNumber(int tag, String text) {
+        try {
+            java.math.BigInteger n = new java.math.BigDecimal(text).toBigIntegerExact();
+            return n.signum() < 0 ? Long.MIN_VALUE : Long.MAX_VALUE; // beyond the long range
+        } catch (NumberFormatException | ArithmeticException e) {
+            throw notANumber(tag, text, "a whole number", e);
+        }
     }
 
+    /**
+     * The failure for a value that is not a number: TwelveMonkeys puts the text of its exception in the tree as
+     * the value when the values lie outside the file.
+     */
+    private static IllegalArgumentException notANumber(int tag, String text, String expected, Exception cause) {
+        int at = text.indexOf("Exception: ");
+        if (text.startsWith("java.") && at > 0) {
+            return new IllegalArgumentException("the values of TIFF tag " + tag + " lie outside the file ("
+                    + text.substring(at + "Exception: ".length()) + ")", cause);
+        }
+        return new IllegalArgumentException("TIFF tag " + tag + " holds '" + text + "', not " + expected, cause);
+    }
+
+    /** The first value as an int (saturated at the int range), or {@code dflt} when the tag is absent. */
+    int intValue(int tag, int dflt) {
+        return has(tag) ? (int) Math.max(Integer.MIN_VALUE, Math.min(Integer.MAX_VALUE, longs(tag)[0])) : dflt;
+    }
+
+    /** @throws IllegalArgumentException naming the tag when a value is not a number */
     double[] doubles(int tag) {
         List<String> v = fields.getOrDefault(tag, List.of());
         double[] out = new double[v.size()];
         for (int i = 0; i < out.length; i++) {
-            out[i] = Double.parseDouble(v.get(i).trim());
+            String text = v.get(i).trim();
+            try {
+                out[i] = Double.parseDouble(text);
+            } catch (NumberFormatException e) {
+                throw notANumber(tag, text, "a number", e);
+            }
         }
         return out;
     }
