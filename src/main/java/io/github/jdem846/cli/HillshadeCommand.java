@@ -1,14 +1,9 @@
 package io.github.jdem846.cli;
 
-import io.github.jdem846.light.LightDirection;
-import io.github.jdem846.light.LightField;
-import io.github.jdem846.render.DemLoader;
-import io.github.jdem846.render.RenderProgress;
-import io.github.jdem846.render.RenderSettings;
-import io.github.jdem846.render.Renderer;
+import io.github.jdem846.job.Product;
+import io.github.jdem846.job.ReliefJob;
+import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.HillshadeMethod;
-import io.github.jdem846.shade.HillshadeOptions;
-import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -57,33 +52,12 @@ public final class HillshadeCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter err = spec.commandLine().getErr();
-        output.refuseOverwriting(input);
-        PhaseTimes times = new PhaseTimes();
         input.requireConsistent();
         sun.requireConsistent(input.bodyOptions);
-        HillshadeMethod m = multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : method;
-        HillshadeOptions options = shading.options();
-        KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).hillshadeGray(dem, m,
-                options, LightField.uniform(new LightDirection(315, 45)), RenderProgress.NONE), input.file());
-        DemLoader.Loaded loaded;
-        try {
-            loaded = input.load(DemLoader.Halo.uniform(1), false, Byte.BYTES);
-        } finally {
-            warmUp.stop();
-        }
-        times.lap("read");
-        CommandSupport.printNotices(loaded, err);
-        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
-        byte[] gray;
-        try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
-            gray = new Renderer(execution.settings()).hillshadeGray(loaded.dem(), m, options, lighting.field(),
-                    loaded.area(), progress);
-        }
-        times.lap("hillshade");
-        output.writeGray(gray, CommandSupport.outputGeometry(loaded), 0.0, execution, err);
-        times.lap("write");
-        times.print(verbose.isVerbose(), err);
-        return 0;
+        Scene scene = Scene.defaults().withHillshade(multidirectional ? HillshadeMethod.MULTIDIRECTIONAL : method)
+                .withHillshadeOptions(shading.options());
+        ReliefJob job = input.job(Product.HILLSHADE).withScene(scene).withSun(sun.sun())
+                .withExecution(execution.settings());
+        return new JobRunner(spec, input, output, execution, verbose).run(job, sun.time());
     }
 }

@@ -93,7 +93,7 @@ final class InfoReport {
         for (String n : info.notices()) {
             line(sb, "Notice", n);
         }
-        for (String n : CommandSupport.scaleNotice(g).stream().toList()) {
+        for (String n : io.github.jdem846.job.ScaleNotice.of(g).stream().toList()) {
             line(sb, "Notice", n);
         }
         return sb.toString().stripTrailing();

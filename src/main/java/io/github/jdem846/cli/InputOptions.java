@@ -1,15 +1,12 @@
 package io.github.jdem846.cli;
 
-import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.Window;
+import io.github.jdem846.job.Product;
+import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.raster.GridRequestException;
-import io.github.jdem846.render.DemLoader;
 import io.github.jdem846.render.OutputSize;
-import java.io.IOException;
-import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
+import picocli.CommandLine;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -91,34 +88,18 @@ public final class InputOptions {
     }
 
     /**
-     * Loads what the picture needs, with {@code halo} (and the whole file's elevation range when asked); the
-     * bundled sample when no FILE was given. The command will hold {@code bytesPerPixel} per output pixel besides
-     * the grid: a picture that cannot fit in the heap is refused before the grid is read. A window or a size that
-     * does not fit the grid is bad usage.
+     * A job for {@code product} of the DEM named (or the bundled sample), with the window, size and body of these
+     * options.
      */
-    DemLoader.Loaded load(DemLoader.Halo halo, boolean fileStatistics, int bytesPerPixel) throws IOException {
-        OutputSize size = size();
-        io.github.jdem846.geo.Ellipsoid ellipsoid = body().ellipsoid();
-        try {
-            if (file != null) {
-                return DemLoader.load(file, window, size, halo, fileStatistics, ellipsoid, bytesPerPixel);
-            }
-            Path tmp = Files.createTempFile("jdem846-sample-", ".tif");
-            try {
-                try (InputStream in = DemReader.class.getResourceAsStream(DemReader.SAMPLE_RESOURCE)) {
-                    if (in == null) {
-                        throw new IOException("the bundled sample DEM is missing from the jar");
-                    }
-                    Files.copy(in, tmp, StandardCopyOption.REPLACE_EXISTING);
-                }
-                return DemLoader.load(tmp, window, size, halo, fileStatistics, ellipsoid, bytesPerPixel);
-            } finally {
-                Files.deleteIfExists(tmp);
-            }
-        } catch (GridRequestException e) {
-            throw e.part() == GridRequestException.Part.WINDOW ? Usage.invalid(command, e.getMessage(), "--window")
-                    : Usage.invalid(command, e.getMessage(), sizeOptions());
-        }
+    ReliefJob job(Product product) {
+        return (file != null ? ReliefJob.of(file) : ReliefJob.ofSample()).withProduct(product).withWindow(window)
+                .withSize(size()).withBody(body());
+    }
+
+    /** A window or a size that does not fit the grid, found once its header was read, as bad usage. */
+    CommandLine.ParameterException usageError(GridRequestException e) {
+        return e.part() == GridRequestException.Part.WINDOW ? Usage.invalid(command, e.getMessage(), "--window")
+                : Usage.invalid(command, e.getMessage(), sizeOptions());
     }
 
     /** The size options given, for a message. */

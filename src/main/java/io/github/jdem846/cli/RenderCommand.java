@@ -1,14 +1,10 @@
 package io.github.jdem846.cli;
 
-import io.github.jdem846.light.LightDirection;
-import io.github.jdem846.render.DemLoader;
-import io.github.jdem846.render.RenderedImage;
-import io.github.jdem846.render.RenderSettings;
-import io.github.jdem846.render.Renderer;
+import io.github.jdem846.job.Product;
+import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shadow.ShadowAlgorithm;
-import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -71,46 +67,14 @@ public final class RenderCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter err = spec.commandLine().getErr();
-        output.refuseOverwriting(input);
-        PhaseTimes times = new PhaseTimes();
         input.requireConsistent();
         sun.requireConsistent(input.bodyOptions);
-        shadowOptions.noteUnused(algorithm, err);
+        shadowOptions.noteUnused(algorithm, spec.commandLine().getErr());
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(method)
                 .withHillshadeOptions(shading.options()).withShadows(algorithm)
                 .withShadowOptions(shadowOptions.options()).withShadowIntensity(shadowIntensity);
-        DemLoader.Halo halo = method == null ? DemLoader.Halo.NONE : DemLoader.Halo.uniform(1);
-        if (scene.hasShadows()) {
-            halo = halo.union(CommandSupport.shadowHalo(sun, input.body(), scene.hillshadeOptions().zFactor(),
-                    scene.shadowOptions(), err));
-        }
-        Scene warmUpScene = scene.withLight(new LightDirection(320, 25));
-        KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem,
-                warmUpScene), input.file());
-        DemLoader.Loaded loaded;
-        try {
-            // besides the grid: the ARGB picture, and the shadow mask
-            loaded = input.load(halo, scene.tint() != null || scene.hasShadows() && input.hasWindow(),
-                    Integer.BYTES + (scene.hasShadows() ? Float.BYTES : 0));
-        } finally {
-            warmUp.stop();
-        }
-        if (scene.hasShadows()) {
-            scene = scene.withShadowOptions(CommandSupport.forLoadedGrid(scene.shadowOptions(), loaded));
-        }
-        times.lap("read");
-        CommandSupport.printNotices(loaded, err);
-        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
-        scene = scene.withLight(lighting.field()).withFade(lighting.fade()).withTintRange(loaded.fileStatistics());
-        RenderedImage image;
-        try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
-            image = new Renderer(execution.settings()).render(loaded.dem(), scene, loaded.area(), progress);
-        }
-        times.lap("render");
-        output.writeRgba(image.argb(), CommandSupport.outputGeometry(loaded), execution, err);
-        times.lap("write");
-        times.print(verbose.isVerbose(), err);
-        return 0;
+        ReliefJob job = input.job(Product.RELIEF).withScene(scene).withSun(sun.sun())
+                .withExecution(execution.settings());
+        return new JobRunner(spec, input, output, execution, verbose).run(job, sun.time());
     }
 }

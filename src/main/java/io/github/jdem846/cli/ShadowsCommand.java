@@ -1,14 +1,9 @@
 package io.github.jdem846.cli;
 
-import io.github.jdem846.light.LightDirection;
-import io.github.jdem846.render.DemLoader;
-import io.github.jdem846.render.RenderProgress;
-import io.github.jdem846.render.RenderSettings;
-import io.github.jdem846.render.Renderer;
+import io.github.jdem846.job.Product;
+import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.render.Scene;
-import io.github.jdem846.shade.Clamp;
 import io.github.jdem846.shadow.ShadowAlgorithm;
-import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -54,43 +49,12 @@ public final class ShadowsCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter err = spec.commandLine().getErr();
-        output.refuseOverwriting(input);
-        PhaseTimes times = new PhaseTimes();
         input.requireConsistent();
         sun.requireConsistent(input.bodyOptions);
-        ShadowAlgorithm alg = algorithm;
-        shadowOptions.noteUnused(alg, err);
-        Scene scene = Scene.defaults().withTint(null).withHillshade(null).withShadows(alg)
-                .withShadowOptions(shadowOptions.options());
-        Scene warmUpScene = scene.withLight(new LightDirection(300, 10));
-        KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).shadows(dem,
-                warmUpScene, RenderProgress.NONE), input.file());
-        DemLoader.Loaded loaded;
-        try {
-            // besides the grid: the mask, and its bytes
-            loaded = input.load(CommandSupport.shadowHalo(sun, input.body(), 1, scene.shadowOptions(), err),
-                    input.hasWindow(), Float.BYTES + Byte.BYTES);
-        } finally {
-            warmUp.stop();
-        }
-        times.lap("read");
-        scene = scene.withShadowOptions(CommandSupport.forLoadedGrid(scene.shadowOptions(), loaded));
-        CommandSupport.printNotices(loaded, err);
-        SunOptions.Lighting lighting = sun.light(loaded.dem().geometry(), input.body(), execution.tileSize, err);
-        float[] mask;
-        try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
-            mask = new Renderer(execution.settings()).shadows(loaded.dem(), scene.withLight(lighting.field()),
-                    loaded.area(), progress);
-        }
-        times.lap("shadows");
-        byte[] bytes = new byte[mask.length];
-        for (int i = 0; i < mask.length; i++) {
-            bytes[i] = (byte) Math.round(Clamp.between(mask[i], 0f, 1f) * 255f);
-        }
-        output.writeGray(bytes, CommandSupport.outputGeometry(loaded), null, execution, err);
-        times.lap("write");
-        times.print(verbose.isVerbose(), err);
-        return 0;
+        shadowOptions.noteUnused(algorithm, spec.commandLine().getErr());
+        Scene scene = Scene.defaults().withShadows(algorithm).withShadowOptions(shadowOptions.options());
+        ReliefJob job = input.job(Product.SHADOWS).withScene(scene).withSun(sun.sun())
+                .withExecution(execution.settings());
+        return new JobRunner(spec, input, output, execution, verbose).run(job, sun.time());
     }
 }

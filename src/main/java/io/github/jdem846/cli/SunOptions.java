@@ -1,16 +1,8 @@
 package io.github.jdem846.cli;
 
 import io.github.jdem846.geo.LatLon;
-import io.github.jdem846.light.LightDirection;
-import io.github.jdem846.light.LightField;
-import io.github.jdem846.raster.GridGeometry;
-import io.github.jdem846.sun.Body;
-import io.github.jdem846.sun.Observer;
-import io.github.jdem846.sun.SunLightField;
-import io.github.jdem846.sun.TwilightFade;
+import io.github.jdem846.job.Sun;
 import io.github.jdem846.sun.ZonedTimeParser;
-import java.io.PrintWriter;
-import java.util.Locale;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -76,30 +68,16 @@ public final class SunOptions {
         return time != null;
     }
 
-    /** The fixed light (azimuth/elevation options); refused together with --sun-time. */
-    LightDirection fixedLight() {
-        return new LightDirection(azimuth != null ? azimuth : 320, elevation != null ? elevation : 25);
-    }
-
-    /** The light over a grid and the darkening of the whole scene (twilight fade, 0 in daylight). */
-    record Lighting(LightField field, double fade) {
-    }
-
-    /**
-     * The light over {@code grid} and the twilight darkening; prints the sun used on {@code err}. The options must
-     * be consistent ({@link #requireConsistent}).
-     */
-    Lighting light(GridGeometry grid, Body body, int tileSize, PrintWriter err) {
+    /** The light these options describe; they must be consistent ({@link #requireConsistent}). */
+    Sun sun() {
         if (time == null) {
-            return new Lighting(LightField.uniform(fixedLight()), 0);
+            return Sun.fixed(azimuth != null ? azimuth : 320, elevation != null ? elevation : 25);
         }
-        body.requireSunByDateAndTime();
-        SunLightField field = SunLightField.of(grid, ZonedTimeParser.parse(time), place, perTile ? tileSize : 0, Observer.SEA_LEVEL);
-        double fade = twilight ? TwilightFade.ORIGINAL.darkening(field.centralSun().zenithDegrees()) : 0;
-        err.println(String.format(Locale.ROOT, "jdem846: sun at %s: azimuth %.2f°, elevation %.2f°%s", time,
-                field.centralSun().azimuthDegrees(), field.centralSun().elevationDegrees(),
-                field.centralSun().isBelowHorizon() ? " (below the horizon: no direct light)" : ""));
-        err.flush();
-        return new Lighting(field, fade);
+        return Sun.at(ZonedTimeParser.parse(time)).seenFrom(place).perTile(perTile).withTwilight(twilight);
+    }
+
+    /** The {@code --sun-time} text as given, or null. */
+    String time() {
+        return time;
     }
 }

@@ -1,12 +1,8 @@
 package io.github.jdem846.cli;
 
-import io.github.jdem846.render.DemLoader;
-import io.github.jdem846.render.RenderProgress;
-import io.github.jdem846.render.RenderedImage;
-import io.github.jdem846.render.RenderSettings;
-import io.github.jdem846.render.Renderer;
+import io.github.jdem846.job.Product;
+import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.render.Scene;
-import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -43,27 +39,9 @@ public final class TintCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter err = spec.commandLine().getErr();
-        output.refuseOverwriting(input);
-        PhaseTimes times = new PhaseTimes();
         input.requireConsistent();
-        Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(null);
-        KernelWarmUp warmUp = KernelWarmUp.start(dem -> new Renderer(new RenderSettings(1, 64)).render(dem, scene),
-                input.file());
-        DemLoader.Loaded loaded;
-        try {
-            loaded = input.load(DemLoader.Halo.NONE, scene.tint() != null, Integer.BYTES);
-        } finally {
-            warmUp.stop();
-        }
-        times.lap("read");
-        CommandSupport.printNotices(loaded, err);
-        RenderedImage image = new Renderer(execution.settings()).render(loaded.dem(),
-                scene.withTintRange(loaded.fileStatistics()), loaded.area(), RenderProgress.NONE);
-        times.lap("tint");
-        output.writeRgba(image.argb(), CommandSupport.outputGeometry(loaded), execution, err);
-        times.lap("write");
-        times.print(verbose.isVerbose(), err);
-        return 0;
+        ReliefJob job = input.job(Product.TINT).withScene(Scene.defaults().withTint(tint.ramp()))
+                .withExecution(execution.settings());
+        return new JobRunner(spec, input, output, execution, verbose).run(job, null);
     }
 }

@@ -1,10 +1,12 @@
 package io.github.jdem846.job;
 
+import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.Window;
 import io.github.jdem846.output.InputProtection;
 import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.output.WriteResult;
+import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.render.DemLoader;
 import io.github.jdem846.render.OutputSize;
@@ -13,12 +15,14 @@ import io.github.jdem846.render.RenderedImage;
 import io.github.jdem846.render.Renderer;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.Clamp;
+import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowOptions;
 import io.github.jdem846.sun.Body;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 import java.util.Objects;
 
 /**
@@ -124,33 +128,54 @@ public record ReliefJob(Path input, Product product, Scene scene, Window window,
         if (s.hasShadows()) {
             s = s.withShadowOptions(forLoadedGrid(s.shadowOptions(), loaded));
         }
-        GridGeometry geometry = loaded.dem().geometry().window(loaded.col(), loaded.row(), loaded.width(),
-                loaded.height());
+        return render(loaded.dem(), loaded.info(), loaded.area(), s.withTintRange(loaded.fileStatistics()),
+                listener);
+    }
+
+    /**
+     * Renders the product of the whole of {@code dem}, a grid already in memory ({@link #input()} is not read):
+     * the tint spans the grid's own range and no halo is needed.
+     *
+     * @throws IllegalArgumentException when the job has a window or a size other than {@link OutputSize#FULL}
+     *                                  (crop or resample the grid first: {@link Dem#crop}, {@link
+     *                                  io.github.jdem846.raster.DemResampler})
+     */
+    public ReliefResult run(Dem dem, JobListener listener) throws InterruptedException {
+        Objects.requireNonNull(dem, "dem");
+        Objects.requireNonNull(listener, "listener");
+        requireDrawable();
+        if (window != null || !size.equals(OutputSize.FULL)) {
+            throw new IllegalArgumentException("a grid in memory is rendered whole: crop or resample it first");
+        }
+        return render(dem, null, CellWindow.whole(dem.width(), dem.height()), productScene(), listener);
+    }
+
+    /** Lights and renders {@code area} of {@code dem} (the rest is halo) with {@code s}. */
+    private ReliefResult render(Dem dem, DemInfo source, CellWindow area, Scene s, JobListener listener)
+            throws InterruptedException {
+        GridGeometry geometry = dem.geometry().window(area.col(), area.row(), area.width(), area.height());
         Renderer renderer = new Renderer(execution);
         ReliefResult result;
         if (product == Product.TINT) {
-            RenderedImage image = renderer.render(loaded.dem(), s.withTintRange(loaded.fileStatistics()),
-                    loaded.area(), listener);
-            result = ReliefResult.rgba(this, loaded.info(), geometry, image.argb(), null);
+            RenderedImage image = renderer.render(dem, s, area, listener);
+            result = ReliefResult.rgba(this, source, geometry, image.argb(), null);
         } else {
-            Sun.Lighting lighting = sun.over(loaded.dem().geometry(), body, execution.tileSize());
+            Sun.Lighting lighting = sun.over(dem.geometry(), body, execution.tileSize());
             if (lighting.sun() != null) {
                 listener.sun(lighting.sun());
             }
             result = switch (product) {
-                case RELIEF -> ReliefResult.rgba(this, loaded.info(), geometry, renderer.render(loaded.dem(),
-                        s.withLight(lighting.field()).withFade(lighting.fade())
-                                .withTintRange(loaded.fileStatistics()), loaded.area(), listener).argb(),
+                case RELIEF -> ReliefResult.rgba(this, source, geometry, renderer.render(dem,
+                        s.withLight(lighting.field()).withFade(lighting.fade()), area, listener).argb(),
                         lighting.sun());
-                case HILLSHADE -> ReliefResult.gray(this, loaded.info(), geometry, renderer.hillshadeGray(
-                        loaded.dem(), s.hillshade(), s.hillshadeOptions(), lighting.field(), loaded.area(),
-                        listener), lighting.sun());
-                case SHADOWS -> ReliefResult.gray(this, loaded.info(), geometry, maskBytes(renderer.shadows(
-                        loaded.dem(), s.withLight(lighting.field()), loaded.area(), listener)), lighting.sun());
+                case HILLSHADE -> ReliefResult.gray(this, source, geometry, renderer.hillshadeGray(dem,
+                        s.hillshade(), s.hillshadeOptions(), lighting.field(), area, listener), lighting.sun());
+                case SHADOWS -> ReliefResult.gray(this, source, geometry, maskBytes(renderer.shadows(dem,
+                        s.withLight(lighting.field()), area, listener)), lighting.sun());
                 case TINT -> throw new AssertionError();
             };
         }
-        listener.phaseDone(product.name().toLowerCase(java.util.Locale.ROOT));
+        listener.phaseDone(product == Product.RELIEF ? "render" : product.name().toLowerCase(Locale.ROOT));
         return result;
     }
 

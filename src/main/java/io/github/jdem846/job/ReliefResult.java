@@ -17,7 +17,7 @@ import java.util.Objects;
  * ({@link Product#HILLSHADE}, {@link Product#SHADOWS}), row 0 = north, with the geometry of the cells they cover.
  *
  * @param job      the job that made it
- * @param source   the header of the DEM read
+ * @param source   the header of the DEM read, or {@code null} for a grid rendered from memory
  * @param geometry the grid the pixels cover (for world files and GeoTIFF tags)
  * @param argb     non-premultiplied 0xAARRGGBB pixels, no-data transparent; {@code null} for a gray product. Owned
  *                 by this record: do not modify

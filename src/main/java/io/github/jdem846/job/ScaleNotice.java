@@ -12,13 +12,13 @@ import java.util.OptionalDouble;
  * away from the equator): slopes are computed from the nominal cell size, as gdaldem does, and the notice gives the
  * xy-scale ({@code HillshadeOptions}, {@code --xy-scale}) that would use the true ground size instead.
  */
-final class ScaleNotice {
+public final class ScaleNotice {
 
     private ScaleNotice() {
     }
 
     /** The notice for {@code g}, if its scale factor calls for one. */
-    static Optional<String> of(GridGeometry g) {
+    public static Optional<String> of(GridGeometry g) {
         if (clearlyNearOne(g)) {
             return Optional.empty();
         }

@@ -20,20 +20,20 @@ class OutputOptionsTest {
     @Test
     void oneWorkerThreadAlsoCompressesTheOutputOnOneThread() {
         OutputOptions out = new OutputOptions();
-        assertFalse(out.options(null, threads(1)).parallelCompression(), "--threads 1: PNG and GeoTIFF on one thread");
-        assertTrue(out.options(null, threads(4)).parallelCompression(), "--threads 4");
+        assertFalse(out.writeOptions(threads(1)).parallelCompression(), "--threads 1: PNG and GeoTIFF on one thread");
+        assertTrue(out.writeOptions(threads(4)).parallelCompression(), "--threads 4");
         assertEquals(Runtime.getRuntime().availableProcessors() > 1,
-                out.options(null, threads(null)).parallelCompression(), "default: all processors");
+                out.writeOptions(threads(null)).parallelCompression(), "default: all processors");
     }
 
     @Test
-    void worldFileAndNoDataFlagsCarryOver() {
+    void worldFileFlagCarriesOverAndNoDataIsLeftToTheProduct() {
         OutputOptions out = new OutputOptions();
-        assertEquals(WriteOptions.Sidecars.NONE, out.options(null, threads(2)).sidecars());
-        assertNull(out.options(null, threads(2)).noData());
+        assertEquals(WriteOptions.Sidecars.NONE, out.writeOptions(threads(2)).sidecars());
+        assertNull(out.writeOptions(threads(2)).noData());
         out.worldFile = true;
-        WriteOptions o = out.options(0.0, threads(2));
+        WriteOptions o = out.writeOptions(threads(2));
         assertEquals(WriteOptions.Sidecars.ALWAYS, o.sidecars());
-        assertEquals(0.0, o.noData());
+        assertNull(o.noData(), "the product decides: a hillshade marks 0 (ReliefResult.write)");
     }
 }

@@ -151,6 +151,15 @@ class ReliefJobTest {
     }
 
     @Test
+    void aHillshadeGeoTiffMarksZeroAsNoDataAndAShadowMaskHasNone() throws IOException, InterruptedException {
+        Path hs = library("hs.tif", ReliefJob.of(VOLCANO).withProduct(Product.HILLSHADE));
+        assertEquals(0.0, io.github.jdem846.io.DemReader.inspect(hs).declaredNoData());
+        Path mask = library("mask.tif", ReliefJob.of(VOLCANO).withProduct(Product.SHADOWS)
+                .withScene(Scene.defaults().withShadows(ShadowAlgorithm.SWEEP)));
+        assertNull(io.github.jdem846.io.DemReader.inspect(mask).declaredNoData());
+    }
+
+    @Test
     void shadowMaskWithoutAnAlgorithmAndHillshadeWithoutAMethodAreRefused() {
         assertThrows(IllegalArgumentException.class,
                 () -> ReliefJob.of(VOLCANO).withProduct(Product.SHADOWS).run(JobListener.NONE));

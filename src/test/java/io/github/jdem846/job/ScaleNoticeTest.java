@@ -1,4 +1,4 @@
-package io.github.jdem846.cli;
+package io.github.jdem846.job;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -22,7 +22,7 @@ class ScaleNoticeTest {
     @Test
     void webMercatorAt49NorthGetsTheNotice() throws IOException {
         GridGeometry g = DemReader.inspect(TestDems.DEM_DIR.resolve(TestDems.VANCOUVER + ".tif")).geometry();
-        Optional<String> notice = CommandSupport.scaleNotice(g);
+        Optional<String> notice = ScaleNotice.of(g);
         assertTrue(notice.isPresent());
         assertTrue(notice.get().contains(String.format(java.util.Locale.ROOT, "%.3f",
                 g.groundScaleFactor().orElseThrow())), notice.get());
@@ -31,7 +31,7 @@ class ScaleNoticeTest {
     @Test
     void aUtmGridNearItsCentralMeridianGetsNone() throws IOException {
         GridGeometry g = DemReader.inspect(TestDems.DEM_DIR.resolve(TestDems.BIG_TUJUNGA + ".tif")).geometry();
-        assertEquals(Optional.empty(), CommandSupport.scaleNotice(g));
+        assertEquals(Optional.empty(), ScaleNotice.of(g));
     }
 
     @Test
@@ -42,13 +42,13 @@ class ScaleNoticeTest {
         GridGeometry far = grid(zone, 1_350_000);
         double k = far.groundScaleFactor().orElseThrow();
         assertTrue(k > 1.02 && k < 1.025, "k = " + k);
-        String notice = CommandSupport.scaleNotice(far).orElseThrow();
+        String notice = ScaleNotice.of(far).orElseThrow();
         assertTrue(notice.contains(String.format(java.util.Locale.ROOT, "%.3f", k)), notice);
 
         GridGeometry between = grid(zone, 1_200_000);
         double kb = between.groundScaleFactor().orElseThrow();
         assertTrue(kb > 1.015 && kb < 1.02, "k = " + kb);
-        assertEquals(Optional.empty(), CommandSupport.scaleNotice(between));
+        assertEquals(Optional.empty(), ScaleNotice.of(between));
     }
 
     /** 100 × 100 cells of 30 m centred {@code dx} east of the zone's central meridian, at 4 000 km north. */

@@ -1,0 +1,90 @@
+package io.github.jdem846.cli;
+
+import io.github.jdem846.job.JobListener;
+import io.github.jdem846.job.ReliefJob;
+import io.github.jdem846.job.Sun;
+import io.github.jdem846.output.WriteOptions;
+import io.github.jdem846.raster.GridRequestException;
+import io.github.jdem846.render.RenderSettings;
+import io.github.jdem846.sun.SunPosition;
+import java.io.PrintWriter;
+import java.util.Locale;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * Runs a rendering command's {@link ReliefJob} for a person at a terminal: the output checked against the input
+ * first, the kernels warmed up while the file is read ({@link KernelWarmUp}), a progress bar, notices and the sun
+ * used on stderr, the phase times with {@code --verbose}, and a window or size that does not fit the grid reported
+ * as bad usage.
+ */
+final class JobRunner {
+
+    private final CommandSpec spec;
+    private final InputOptions input;
+    private final OutputOptions output;
+    private final ExecutionOptions execution;
+    private final VerboseOption verbose;
+
+    JobRunner(CommandSpec spec, InputOptions input, OutputOptions output, ExecutionOptions execution,
+              VerboseOption verbose) {
+        this.spec = spec;
+        this.input = input;
+        this.output = output;
+        this.execution = execution;
+        this.verbose = verbose;
+    }
+
+    /**
+     * Runs {@code job} and writes its product to {@code -o}.
+     *
+     * @param sunTime the {@code --sun-time} text as given (for the line saying which sun was used), or null
+     * @return the exit status, 0
+     */
+    int run(ReliefJob job, String sunTime) throws Exception {
+        PrintWriter err = spec.commandLine().getErr();
+        PhaseTimes times = new PhaseTimes();
+        WriteOptions options = output.writeOptions(execution);
+        job.requireDrawable();
+        job.checkOutput(output.path(), options);
+        ReliefJob warmUpJob = job.withExecution(new RenderSettings(1, 64)).withWindow(null)
+                .withSize(io.github.jdem846.render.OutputSize.FULL)
+                .withSun(job.sun().byTime() ? Sun.fixed(300, 10) : job.sun());
+        KernelWarmUp warmUp = KernelWarmUp.start(dem -> warmUpJob.run(dem, JobListener.NONE), input.file());
+        try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
+            job.runAndWrite(output.path(), options, new JobListener() {
+                @Override
+                public void update(String stage, long done, long total) {
+                    progress.update(stage, done, total);
+                }
+
+                @Override
+                public void notice(String message) {
+                    err.println("jdem846: note: " + message);
+                    err.flush();
+                }
+
+                @Override
+                public void phaseDone(String phase) {
+                    if (phase.equals("read")) {
+                        warmUp.stop();
+                    }
+                    times.lap(phase);
+                }
+
+                @Override
+                public void sun(SunPosition sun) {
+                    err.println(String.format(Locale.ROOT, "jdem846: sun at %s: azimuth %.2f°, elevation %.2f°%s",
+                            sunTime, sun.azimuthDegrees(), sun.elevationDegrees(),
+                            sun.isBelowHorizon() ? " (below the horizon: no direct light)" : ""));
+                    err.flush();
+                }
+            });
+        } catch (GridRequestException e) {
+            throw input.usageError(e);
+        } finally {
+            warmUp.stop();
+        }
+        times.print(verbose.isVerbose(), err);
+        return 0;
+    }
+}
