@@ -3,6 +3,7 @@ package io.github.jdem846.cli;
 import io.github.jdem846.job.JobListener;
 import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.job.Sun;
+import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.raster.GridRequestException;
 import io.github.jdem846.render.RenderSettings;
@@ -14,8 +15,8 @@ import picocli.CommandLine.Model.CommandSpec;
 /**
  * Runs a rendering command's {@link ReliefJob} for a person at a terminal: the output checked against the input
  * first, the kernels warmed up while the file is read ({@link KernelWarmUp}), a progress bar, notices and the sun
- * used on stderr, the phase times with {@code --verbose}, and a window or size that does not fit the grid reported
- * as bad usage.
+ * used on stderr, the phase times with {@code --verbose}; an output name without a known image extension, and a
+ * window or size that does not fit the grid, reported as bad usage.
  */
 final class JobRunner {
 
@@ -44,6 +45,7 @@ final class JobRunner {
         PrintWriter err = spec.commandLine().getErr();
         PhaseTimes times = new PhaseTimes();
         WriteOptions options = output.writeOptions(execution);
+        Usage.check(spec, "--output", () -> ImageOutput.filesWritten(output.path(), options));   // the extension
         job.requireDrawable();
         job.checkOutput(output.path(), options);
         ReliefJob warmUpJob = job.withExecution(new RenderSettings(1, 64)).withWindow(null)

@@ -173,8 +173,8 @@ class RenderCommandsTest {
         assertEquals(2, badSun.exitCode());
         assertTrue(badSun.err().contains("-90 and 90"), badSun.err());
         CliRun badExt = CliRun.of("render", BT, "-o", dir.resolve("x.jpg").toString());
-        assertEquals(1, badExt.exitCode());
-        assertTrue(badExt.err().contains(".png"), badExt.err());
+        assertEquals(2, badExt.exitCode(), "an unknown extension is bad usage");
+        assertTrue(badExt.err().contains(".png") && badExt.err().contains("--output"), badExt.err());
         CliRun usage = CliRun.of("render", BT);
         assertEquals(2, usage.exitCode());
         assertFalse(Files.exists(out));
