@@ -57,10 +57,8 @@ public final class Cancellation {
      * @throws CancellationException when the calling thread is interrupted; its interrupt status stays set
      */
     public static void invokeAll(ForkJoinPool pool, int parts, Part part) {
+        checkInterrupted();
         Thread caller = Thread.currentThread();
-        if (caller.isInterrupted()) {
-            throw cancelled();
-        }
         Cancellation c = new Cancellation(caller, parts, part);
         boolean callerWorks = pool == ForkJoinPool.commonPool()
                 || caller instanceof ForkJoinWorkerThread w && w.getPool() == pool;
@@ -116,7 +114,15 @@ public final class Cancellation {
         if (failed != null) {
             throw new IllegalStateException(failed);
         }
-        if (caller.isInterrupted()) {
+        checkInterrupted();
+    }
+
+    /**
+     * For the calling thread's own work between parts: throws {@link CancellationException} (the interrupt status
+     * kept) when the thread is interrupted.
+     */
+    public static void checkInterrupted() {
+        if (Thread.currentThread().isInterrupted()) {
             throw cancelled();
         }
     }

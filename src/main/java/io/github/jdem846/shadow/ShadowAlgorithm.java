@@ -102,8 +102,12 @@ public enum ShadowAlgorithm {
             case MARCH, EXACT -> march(marcher(dem, new RayFrame(dem, light, options), options), window, out, pool);
             default -> throw new AssertionError(this);
         }
+        Cancellation.checkInterrupted();                 // also during the soft sweep's work on this thread
         return new ShadowMask(ww, wh, out);
     }
+
+    /** Cells of the soft sweep's loops on the calling thread between two tests of its interrupt status. */
+    private static final int CELLS_PER_CALLER_CHECK = 1 << 16;
 
     /** Brackets across the sun's disk of the soft sweep: the horizon is placed within 1/16 of the disk's diameter. */
     static final int SOFT_SWEEP_LEVELS = 16;
@@ -142,6 +146,9 @@ public enum ShadowAlgorithm {
             highestBlocked = highestBlockedLevelByLevel(dem, light, hard, pool, window, levels);
         }
         for (int i = 0; i < n; i++) {
+            if ((i & CELLS_PER_CALLER_CHECK - 1) == 0) {
+                Cancellation.checkInterrupted();
+            }
             int k = highestBlocked[i];
             if (k < 0) {
                 out[i] = 0f;
@@ -261,6 +268,9 @@ public enum ShadowAlgorithm {
         int[] highest = new int[n];
         int w = window.width();
         for (int i = 0; i < n; i++) {
+            if ((i & CELLS_PER_CALLER_CHECK - 1) == 0) {
+                Cancellation.checkInterrupted();
+            }
             int b = bits[i] & kept;
             if (b != 0) {
                 highest[i] = first + 31 - Integer.numberOfLeadingZeros(b);
