@@ -23,8 +23,15 @@ import java.util.concurrent.TimeUnit;
  * composition tile by tile on a {@link ForkJoinPool}. The result is identical for any thread count and tile size.
  *
  * <p>To render at a smaller size, resample the DEM first ({@link io.github.jdem846.raster.DemResampler}, or a
- * decimated read): stages then run at the output resolution. Interrupting the calling thread stops the work
- * promptly with {@link InterruptedException}.
+ * decimated read): stages then run at the output resolution.
+ *
+ * <p>Cancelling: interrupt the thread that called a method. Each call runs on a pool of its own
+ * ({@link RenderSettings#parallelism()} daemon threads named {@code jdem846-render-…}); the running stage stops at
+ * its next test, before each tile, each block of 48 sweep lines or every 64 rays of a march, and the method throws
+ * {@link InterruptedException} (interrupt status cleared) once the pool's threads have ended. Measured on two
+ * threads of a 2-core machine: an exact-shadow render of a 1197 × 643 DEM (3.7–7.7 s uninterrupted) throws a median
+ * 1.4 ms and at most 8 ms after the interrupt, a soft sweep of 4788 × 2572 cells a median 22 ms, at most 94 ms
+ * (docs/algorithms.md). The stages alone cancel the same way: {@link io.github.jdem846.shadow.ShadowAlgorithm}.
  */
 public final class Renderer {
 

@@ -22,10 +22,11 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * {@link ShadowAlgorithm#compute} alone stops promptly when its calling thread is interrupted, inside the long
- * stage itself: each case runs for seconds uninterrupted (on two threads of a 2-core machine, warm: exact on Big
- * Tujunga at 5° 19–23 s, the soft sweep on Big Tujunga mirror-tiled 2 × 2 2.5 s, with thin features 7 s, the soft
- * march at 2° 2 s), is interrupted after 200 ms and must end with {@link CancellationException} within 500 ms,
- * interrupt status set, leaving the pool idle so that it shuts down at once.
+ * stage itself: each case runs for seconds uninterrupted (two threads of a 2-core machine, warm, idle to loaded:
+ * exact on Big Tujunga at 5° 3.7–23 s, the soft sweep on Big Tujunga mirror-tiled 4 × 4 1.1–2.5 s in one walk and
+ * 5–11 s level by level (thin features), the soft march at 2° 2 s), is interrupted after 200 ms and must end with
+ * {@link CancellationException} within 500 ms, interrupt status set, leaving the pool idle so that it shuts down at
+ * once.
  */
 class ShadowCancellationTest {
 
