@@ -1,8 +1,8 @@
 package io.github.jdem846.shadow;
 
 import io.github.jdem846.light.LightDirection;
-import io.github.jdem846.raster.Dem;
 import io.github.jdem846.parallel.Cancellation;
+import io.github.jdem846.raster.Dem;
 import java.util.Locale;
 import java.util.Objects;
 import java.util.concurrent.ForkJoinPool;

@@ -1,8 +1,8 @@
 package io.github.jdem846.shadow;
 
+import io.github.jdem846.parallel.Cancellation;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
-import io.github.jdem846.parallel.Cancellation;
 import java.util.concurrent.ForkJoinPool;
 
 /**
@@ -278,8 +278,8 @@ final class SunSweep {
 
     /**
      * Splits the lines that reach {@code win} into blocks of {@link #LINES_PER_TASK} and runs them on the pool; once
-     * the caller is interrupted no further block starts ({@link Cancellation}: a block is a few milliseconds even on
-     * a large grid, so the walks themselves test nothing).
+     * the caller is interrupted no further block starts ({@link Cancellation}; a block takes milliseconds, tens on
+     * the widest grids, so the walks themselves, the hot loops, test nothing).
      */
     private void forEachBlock(CellWindow win, int haloSteps, float[] out, ForkJoinPool pool, BlockWork work) {
         int ia = frameI(win.col(), win.row());
