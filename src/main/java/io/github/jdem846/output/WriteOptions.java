@@ -13,8 +13,8 @@ import java.util.Objects;
  *                            PNG has no no-data marker: RGBA no-data pixels are transparent (alpha 0)
  * @param pngCompressionLevel deflate level 0 (none) to 9 (smallest) for PNG; the default 1 is the fastest level
  *                            and within 10 % of the smallest file (see docs/performance.md)
- * @param parallelCompression compress on all processors: PNG data in PngEncoder's shared daemon thread pool, GeoTIFF
- *                            strips in the common ForkJoinPool (the file is the same either way)
+ * @param parallelCompression compress on all processors: PNG row segments and GeoTIFF strips in the common
+ *                            ForkJoinPool (the file is the same either way)
  */
 public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, Double noData,
                            int pngCompressionLevel, boolean parallelCompression) {

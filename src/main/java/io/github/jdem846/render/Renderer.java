@@ -9,8 +9,13 @@ import io.github.jdem846.shade.IlluminationStage;
 import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.ShadowMask;
 import io.github.jdem846.tint.TintFunction;
+import java.util.List;
 import java.util.Objects;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinWorkerThread;
+import java.util.concurrent.TimeUnit;
 
 /**
  * Renders a {@link Scene} of a {@link Dem} (or of a rectangle of it, the rest serving as halo) into ARGB pixels, one
@@ -18,10 +23,21 @@ import java.util.concurrent.ForkJoinPool;
  * composition tile by tile on a {@link ForkJoinPool}. The result is identical for any thread count and tile size.
  *
  * <p>To render at a smaller size, resample the DEM first ({@link io.github.jdem846.raster.DemResampler}, or a
- * decimated read): stages then run at the output resolution. Interrupting the calling thread stops the work
- * promptly with {@link InterruptedException}.
+ * decimated read): stages then run at the output resolution.
+ *
+ * <p>Cancelling: interrupt the thread that called a method. Each call runs on a pool of its own
+ * ({@link RenderSettings#parallelism()} daemon threads named {@code jdem846-render-…}); the running stage stops at
+ * its next test, before each tile, each block of 48 sweep lines or every 64 rays of a march, and the method throws
+ * {@link InterruptedException} (interrupt status cleared) once the pool's threads have ended. Measured on two
+ * threads of a 2-core machine: an exact-shadow render of a 1197 × 643 DEM (3.7–7.7 s uninterrupted) throws a median
+ * 1.4 ms and at most 8 ms after the interrupt, a soft sweep of 4788 × 2572 cells a median 22 ms, at most 94 ms
+ * (docs/algorithms.md). The stages alone cancel the same way: {@link io.github.jdem846.shadow.ShadowAlgorithm}.
  */
 public final class Renderer {
+
+    /** The name prefix of the renderer's worker threads. */
+    static final String WORKER_NAME = "jdem846-render-";
+    private static final long TERMINATION_WAIT_SECONDS = 10;
 
     /** Mid-gray, the base colour when a scene has no tint (the original's gray tint, 0.5). */
     static final int PLAIN_GRAY = 0xFF808080;
@@ -58,11 +74,8 @@ public final class Renderer {
         Objects.requireNonNull(scene, "scene");
         Objects.requireNonNull(progress, "progress");
         requireInside(area, dem);
-        ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
-        try {
-            return render(dem, scene, area, progress, pool);
-        } finally {
-            pool.shutdownNow();
+        try (WorkerPool workers = new WorkerPool(settings.parallelism())) {
+            return render(dem, scene, area, progress, workers.pool);
         }
     }
 
@@ -160,16 +173,13 @@ public final class Renderer {
     private void illuminateTiles(Dem dem, IlluminationStage stage, LightField light, CellWindow area,
                                  RenderProgress progress, IlluminatedTile sink) throws InterruptedException {
         requireInside(area, dem);
-        ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
-        try {
-            new TileExecutor(pool, settings.tileSize()).forEachTile(area.width(), area.height(), "hillshade",
+        try (WorkerPool workers = new WorkerPool(settings.parallelism())) {
+            new TileExecutor(workers.pool, settings.tileSize()).forEachTile(area.width(), area.height(), "hillshade",
                     progress, (c0, r0, w, h) -> {
                         float[] tile = new float[w * h];
                         illuminate(dem, stage, light, area.col() + c0, area.row() + r0, w, h, tile);
                         sink.accept(c0, r0, w, h, tile);
                     });
-        } finally {
-            pool.shutdownNow();
         }
     }
 
@@ -184,12 +194,45 @@ public final class Renderer {
     public float[] shadows(Dem dem, Scene scene, CellWindow area, RenderProgress progress)
             throws InterruptedException {
         requireInside(area, dem);
-        ForkJoinPool pool = new ForkJoinPool(settings.parallelism());
-        try {
-            float[] s = castShadows(dem, scene, area, pool, progress);
+        try (WorkerPool workers = new WorkerPool(settings.parallelism())) {
+            float[] s = castShadows(dem, scene, area, workers.pool, progress);
             return s != null ? s : new float[area.width() * area.height()];
-        } finally {
+        }
+    }
+
+    /**
+     * A pool of daemon threads named {@value #WORKER_NAME}…, one per call: closing it shuts it down and waits (at
+     * most {@link #TERMINATION_WAIT_SECONDS}) until its threads have ended, which takes no time since every stage
+     * has returned by then. The interrupt status is kept.
+     */
+    private static final class WorkerPool implements AutoCloseable {
+        final ForkJoinPool pool;
+        private final List<Thread> threads = new CopyOnWriteArrayList<>();
+
+        WorkerPool(int parallelism) {
+            pool = new ForkJoinPool(parallelism, p -> {
+                ForkJoinWorkerThread t = ForkJoinPool.defaultForkJoinWorkerThreadFactory.newThread(p);
+                t.setName(WORKER_NAME + t.getName());
+                threads.add(t);
+                return t;
+            }, null, false);
+        }
+
+        @Override
+        public void close() {
             pool.shutdownNow();
+            boolean interrupted = Thread.interrupted();
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(TERMINATION_WAIT_SECONDS);
+            try {
+                for (Thread t : threads) {
+                    t.join(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+                }
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
         }
     }
 
@@ -222,10 +265,11 @@ public final class Renderer {
             return null;
         }
         progress.update("shadows", 0, 1);
-        ShadowMask mask = scene.shadows().computeWindow(dem, scene.shadowLight(), scene.shadowOptions(), pool,
-                area);
-        if (Thread.interrupted()) {
-            throw new InterruptedException("render cancelled");
+        ShadowMask mask;
+        try {
+            mask = scene.shadows().computeWindow(dem, scene.shadowLight(), scene.shadowOptions(), pool, area);
+        } catch (CancellationException e) {
+            throw TileExecutor.interrupted(e);
         }
         progress.update("shadows", 1, 1);
         return mask.backingArray();

@@ -1,11 +1,8 @@
 package io.github.jdem846.render;
 
-import java.util.ArrayList;
-import java.util.List;
+import io.github.jdem846.parallel.Cancellation;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.ForkJoinTask;
-import java.util.concurrent.RecursiveAction;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
@@ -38,50 +35,32 @@ public final class TileExecutor {
     /**
      * Runs {@code task} on every tile of a {@code width × height} raster and waits for all of them.
      *
-     * @throws InterruptedException  if the calling thread is interrupted; tiles not yet started are skipped
+     * @throws InterruptedException if the calling thread is interrupted: tiles not yet started are skipped, the call
+     *                              returns once the running ones have finished, and the interrupt status is cleared
      */
     public void forEachTile(int width, int height, String stage, RenderProgress progress, TileTask task)
             throws InterruptedException {
         TileGrid grid = new TileGrid(width, height, tileSize);
         int n = grid.count();
         AtomicLong done = new AtomicLong();
-        CancelFlag cancel = new CancelFlag();
-        List<RecursiveAction> actions = new ArrayList<>(n);
-        for (int i = 0; i < n; i++) {
-            int index = i;
-            actions.add(new RecursiveAction() {
-                @Override
-                protected void compute() {
-                    if (cancel.cancelled) {
-                        return;
-                    }
-                    task.run(grid.col0(index), grid.row0(index), grid.tileWidth(index), grid.tileHeight(index));
-                    progress.update(stage, done.incrementAndGet(), n);
-                }
-            });
-        }
-        ForkJoinTask<?> all = pool.submit(() -> ForkJoinTask.invokeAll(actions));
         try {
-            all.get();
-        } catch (InterruptedException e) {
-            cancel.cancelled = true;
-            all.cancel(true);
-            throw e;
-        } catch (java.util.concurrent.ExecutionException e) {
-            Throwable cause = e.getCause();
-            if (cause instanceof RuntimeException re) {
-                throw re;
-            }
-            if (cause instanceof Error er) {
-                throw er;
-            }
-            throw new IllegalStateException(cause);
+            Cancellation.invokeAll(pool, n, (index, cancel) -> {
+                task.run(grid.col0(index), grid.row0(index), grid.tileWidth(index), grid.tileHeight(index));
+                progress.update(stage, done.incrementAndGet(), n);
+            });
         } catch (CancellationException e) {
-            throw new InterruptedException("render cancelled");
+            throw interrupted(e);
         }
     }
 
-    private static final class CancelFlag {
-        volatile boolean cancelled;
+    /**
+     * The {@link InterruptedException} of a render stopped by {@link Cancellation} (the interrupt status cleared, as
+     * for any method that throws it).
+     */
+    static InterruptedException interrupted(CancellationException cause) {
+        Thread.interrupted();
+        InterruptedException e = new InterruptedException("render cancelled");
+        e.initCause(cause);
+        return e;
     }
 }

@@ -1,18 +1,21 @@
 package io.github.jdem846.shadow;
 
 import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.parallel.Cancellation;
 import io.github.jdem846.raster.Dem;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.RecursiveAction;
 
 /**
  * The cast-shadow methods ({@code --algorithm}). All give the same kind of {@link ShadowMask}; the scene decides
  * what is computed at all: a sun at or below the horizon shades every valid cell without tracing, a sun at the
  * zenith casts no shadow, an all-no-data DEM gives an empty mask.
+ *
+ * <p>Cancelling: interrupt the thread that called {@code compute}, {@code computeWindow} or {@code computeCells}.
+ * The work stops within one block of 48 sweep lines or one 64-ray run of a march, and the call throws {@link
+ * java.util.concurrent.CancellationException} with the thread's interrupt status still set; when it returns or throws,
+ * none of its work is left running on the pool ({@link io.github.jdem846.parallel.Cancellation}).
  */
 public enum ShadowAlgorithm {
 
@@ -99,8 +102,12 @@ public enum ShadowAlgorithm {
             case MARCH, EXACT -> march(marcher(dem, new RayFrame(dem, light, options), options), window, out, pool);
             default -> throw new AssertionError(this);
         }
+        Cancellation.checkInterrupted();                 // also during the soft sweep's work on this thread
         return new ShadowMask(ww, wh, out);
     }
+
+    /** Cells of the soft sweep's loops on the calling thread between two tests of its interrupt status. */
+    private static final int CELLS_PER_CALLER_CHECK = 1 << 16;
 
     /** Brackets across the sun's disk of the soft sweep: the horizon is placed within 1/16 of the disk's diameter. */
     static final int SOFT_SWEEP_LEVELS = 16;
@@ -139,6 +146,9 @@ public enum ShadowAlgorithm {
             highestBlocked = highestBlockedLevelByLevel(dem, light, hard, pool, window, levels);
         }
         for (int i = 0; i < n; i++) {
+            if ((i & CELLS_PER_CALLER_CHECK - 1) == 0) {
+                Cancellation.checkInterrupted();
+            }
             int k = highestBlocked[i];
             if (k < 0) {
                 out[i] = 0f;
@@ -258,6 +268,9 @@ public enum ShadowAlgorithm {
         int[] highest = new int[n];
         int w = window.width();
         for (int i = 0; i < n; i++) {
+            if ((i & CELLS_PER_CALLER_CHECK - 1) == 0) {
+                Cancellation.checkInterrupted();
+            }
             int b = bits[i] & kept;
             if (b != 0) {
                 highest[i] = first + 31 - Integer.numberOfLeadingZeros(b);
@@ -301,24 +314,13 @@ public enum ShadowAlgorithm {
         }
         RayMarcher marcher = marcher(dem, new RayFrame(dem, light, options), options);
         int w = dem.width();
-        List<RecursiveAction> tasks = new ArrayList<>();
         int perTask = 256;
-        for (int from = 0; from < cells.length; from += perTask) {
-            int a = from;
-            int b = Math.min(cells.length, from + perTask);
-            tasks.add(new RecursiveAction() {
-                @Override
-                protected void compute() {
-                    for (int q = a; q < b; q++) {
-                        out[q] = marcher.shade(cells[q] % w, cells[q] / w);
-                    }
+        Cancellation.invokeAll(pool, (cells.length + perTask - 1) / perTask, (t, cancel) -> {
+            for (int q = t * perTask; q < Math.min(cells.length, (t + 1) * perTask); q++) {
+                if ((q & CELLS_PER_CHECK - 1) == 0 && cancel.isCancelled()) {
+                    return;
                 }
-            });
-        }
-        pool.invoke(new RecursiveAction() {
-            @Override
-            protected void compute() {
-                invokeAll(tasks);
+                out[q] = marcher.shade(cells[q] % w, cells[q] / w);
             }
         });
         return out;
@@ -330,27 +332,20 @@ public enum ShadowAlgorithm {
                 : new RayMarcher(dem, frame, options.step(), options.sampling() == Sampling.BILINEAR);
     }
 
+    /** Rays traced between two tests of {@link Cancellation#isCancelled()}: one ray is already many samples. */
+    private static final int CELLS_PER_CHECK = 64;
+
     private static void march(RayMarcher marcher, CellWindow win, float[] out, ForkJoinPool pool) {
-        List<RecursiveAction> tasks = new ArrayList<>();
         int rowsPerTask = Math.max(1, Math.min(16, win.height() / 64));
-        for (int r = 0; r < win.height(); r += rowsPerTask) {
-            int from = r;
-            int to = Math.min(win.height(), r + rowsPerTask);
-            tasks.add(new RecursiveAction() {
-                @Override
-                protected void compute() {
-                    for (int rr = from; rr < to; rr++) {
-                        for (int c = 0; c < win.width(); c++) {
-                            out[rr * win.width() + c] = marcher.shade(win.col() + c, win.row() + rr);
-                        }
+        int ww = win.width();
+        Cancellation.invokeAll(pool, (win.height() + rowsPerTask - 1) / rowsPerTask, (t, cancel) -> {
+            for (int rr = t * rowsPerTask; rr < Math.min(win.height(), (t + 1) * rowsPerTask); rr++) {
+                for (int c = 0; c < ww; c++) {
+                    if ((c & CELLS_PER_CHECK - 1) == 0 && cancel.isCancelled()) {
+                        return;
                     }
+                    out[rr * ww + c] = marcher.shade(win.col() + c, win.row() + rr);
                 }
-            });
-        }
-        pool.invoke(new RecursiveAction() {
-            @Override
-            protected void compute() {
-                invokeAll(tasks);
             }
         });
     }

@@ -1,11 +1,9 @@
 package io.github.jdem846.shadow;
 
+import io.github.jdem846.parallel.Cancellation;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.RecursiveAction;
 
 /**
  * The shadow test of the ray march in O(cells): straight lines parallel to the sun direction, one cell apart across
@@ -278,7 +276,11 @@ final class SunSweep {
         void run(Window w, int kFrom, int kTo);
     }
 
-    /** Splits the lines that reach {@code win} into blocks of {@link #LINES_PER_TASK} and runs them on the pool. */
+    /**
+     * Splits the lines that reach {@code win} into blocks of {@link #LINES_PER_TASK} and runs them on the pool; once
+     * the caller is interrupted no further block starts ({@link Cancellation}; a block takes milliseconds, tens on
+     * the widest grids, so the walks themselves, the hot loops, test nothing).
+     */
     private void forEachBlock(CellWindow win, int haloSteps, float[] out, ForkJoinPool pool, BlockWork work) {
         int ia = frameI(win.col(), win.row());
         int ib = frameI(win.colEnd() - 1, win.rowEnd() - 1);
@@ -292,22 +294,10 @@ final class SunSweep {
         int kMin = wj0 - pf[wi1] - 1;
         int kMax = wj1 - pf[wi0];
         Window w = new Window(win, wi0, wi1, wj0, wj1, iTop, out);
-        List<RecursiveAction> tasks = new ArrayList<>();
-        for (int k = kMin; k <= kMax; k += LINES_PER_TASK) {
-            int from = k;
-            int to = Math.min(kMax, k + LINES_PER_TASK - 1);
-            tasks.add(new RecursiveAction() {
-                @Override
-                protected void compute() {
-                    work.run(w, from, to);
-                }
-            });
-        }
-        pool.invoke(new RecursiveAction() {
-            @Override
-            protected void compute() {
-                invokeAll(tasks);
-            }
+        int blocks = (int) Math.max(0, ((long) kMax - kMin + LINES_PER_TASK) / LINES_PER_TASK);
+        Cancellation.invokeAll(pool, blocks, (b, cancel) -> {
+            int from = kMin + b * LINES_PER_TASK;
+            work.run(w, from, Math.min(kMax, from + LINES_PER_TASK - 1));
         });
     }
 

@@ -20,7 +20,8 @@ import javax.imageio.stream.ImageOutputStream;
 /**
  * Measures PNG encoders on a realistic rendered product (not a test; run by hand, see docs/performance.md):
  * ImageIO's PNG writer against {@link PngEncoder} at several compression levels, with and without its
- * multi-threaded deflate and its predictor (PNG filter) encoding. Each configuration is run once to warm up and
+ * multi-threaded deflate and its predictor (PNG filter) encoding, and against our {@link PngWriter} (the one
+ * {@link ImageOutput} uses) on one thread (1T) and in parallel (MT). Each configuration is run once to warm up and
  * then {@code runs} times; the best wall time is reported with the file size. Every output is decoded with ImageIO
  * once and compared pixel by pixel with the source, so a fast but wrong encoder cannot win.
  *
@@ -73,6 +74,12 @@ public final class PngEncodingComparison {
         list.add(new Config("ImageIO default", (img, f) -> imageIo(img, f, Float.NaN)));
         list.add(new Config("ImageIO quality 0.0 (deflate 9)", (img, f) -> imageIo(img, f, 0f)));
         list.add(new Config("ImageIO quality 0.75 (deflate 2)", (img, f) -> imageIo(img, f, 0.75f)));
+        for (int level : new int[]{1, 6}) {
+            for (boolean mt : new boolean[]{false, true}) {
+                String name = "PngWriter L" + level + (mt ? " MT" : " 1T");
+                list.add(new Config(name, (img, f) -> PngWriter.write(img, f, level, mt)));
+            }
+        }
         for (boolean predictor : new boolean[]{false, true}) {
             for (int level : new int[]{1, 3, 6, 9}) {
                 for (boolean mt : new boolean[]{false, true}) {

@@ -1,0 +1,135 @@
+package io.github.jdem846.parallel;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.github.jdem846.testing.InterruptedRun;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicIntegerArray;
+import org.junit.jupiter.api.Test;
+
+class CancellationTest {
+
+    @Test
+    void everyPartRunsOnceOnAnyPool() {
+        for (ForkJoinPool pool : new ForkJoinPool[] {new ForkJoinPool(1), new ForkJoinPool(3),
+            ForkJoinPool.commonPool()}) {
+            try {
+                for (int parts : new int[] {0, 1, 2, 7, 1000}) {
+                    AtomicIntegerArray runs = new AtomicIntegerArray(parts);
+                    Cancellation.invokeAll(pool, parts, (i, c) -> runs.incrementAndGet(i));
+                    for (int i = 0; i < parts; i++) {
+                        assertEquals(1, runs.get(i), "part " + i + " of " + parts);
+                    }
+                }
+            } finally {
+                if (pool != ForkJoinPool.commonPool()) {
+                    pool.shutdown();
+                }
+            }
+        }
+    }
+
+    @Test
+    void aWorkerOfThePoolMayCallItWithoutDeadlock() {
+        ForkJoinPool one = new ForkJoinPool(1);
+        try {
+            AtomicInteger runs = new AtomicInteger();
+            one.submit(() -> Cancellation.invokeAll(one, 50, (i, c) -> runs.incrementAndGet())).join();
+            assertEquals(50, runs.get());
+        } finally {
+            one.shutdown();
+        }
+    }
+
+    @Test
+    void aFailingPartStopsTheOthersAndItsExceptionReachesTheCaller() {
+        ForkJoinPool pool = new ForkJoinPool(2);
+        try {
+            IllegalStateException boom = new IllegalStateException("boom");
+            AtomicInteger started = new AtomicInteger();
+            IllegalStateException thrown = assertThrows(IllegalStateException.class,
+                    () -> Cancellation.invokeAll(pool, 10_000, (i, c) -> {
+                        started.incrementAndGet();
+                        if (i == 3) {
+                            throw boom;
+                        }
+                    }));
+            assertSame(boom, thrown);
+            assertTrue(started.get() < 10_000, started.get() + " parts started");
+        } finally {
+            pool.shutdown();
+        }
+    }
+
+    @Test
+    void anInterruptedCallerStartsNothing() {
+        AtomicInteger runs = new AtomicInteger();
+        Thread.currentThread().interrupt();
+        try {
+            assertThrows(CancellationException.class,
+                    () -> Cancellation.invokeAll(ForkJoinPool.commonPool(), 10, (i, c) -> runs.incrementAndGet()));
+            assertTrue(Thread.currentThread().isInterrupted(), "the interrupt status stays set");
+        } finally {
+            Thread.interrupted();
+        }
+        assertEquals(0, runs.get());
+    }
+
+    @Test
+    void anInterruptEndsTheCallOnlyOnceNoPartRuns() throws InterruptedException {
+        for (ForkJoinPool pool : new ForkJoinPool[] {new ForkJoinPool(2), ForkJoinPool.commonPool()}) {
+            AtomicInteger running = new AtomicInteger();
+            AtomicInteger runningAtEnd = new AtomicInteger(-1);
+            InterruptedRun run = InterruptedRun.of(() -> {
+                try {
+                    Cancellation.invokeAll(pool, 100, (i, c) -> {
+                        running.incrementAndGet();
+                        long until = System.nanoTime() + 20_000_000L;  // 20 ms after cancelling
+                        while (!c.isCancelled() || System.nanoTime() < until) {
+                            if (!c.isCancelled()) {
+                                until = System.nanoTime() + 20_000_000L;
+                            }
+                            Thread.onSpinWait();
+                        }
+                        running.decrementAndGet();
+                    });
+                } finally {
+                    runningAtEnd.set(running.get());
+                }
+                return null;
+            }, 100);
+            assertInstanceOf(CancellationException.class, run.thrown());
+            assertTrue(run.interruptStatusAtEnd());
+            assertEquals(0, runningAtEnd.get(), "parts still running when the call ended");
+            if (pool != ForkJoinPool.commonPool()) {
+                pool.shutdown();
+            }
+        }
+    }
+
+    @Test
+    void isCancelledFollowsTheCallersInterruptStatus() {
+        ForkJoinPool pool = new ForkJoinPool(2);
+        try {
+            boolean[] seen = new boolean[2];
+            Cancellation.invokeAll(pool, 1, (i, c) -> seen[0] = c.isCancelled());
+            assertFalse(seen[0]);
+            Thread caller = Thread.currentThread();
+            assertThrows(CancellationException.class, () -> Cancellation.invokeAll(pool, 1, (i, c) -> {
+                caller.interrupt();
+                seen[1] = c.isCancelled();
+            }));
+            assertTrue(Thread.interrupted(), "the interrupt status stays set");
+            assertTrue(seen[1]);
+        } finally {
+            pool.shutdown();
+        }
+    }
+}
