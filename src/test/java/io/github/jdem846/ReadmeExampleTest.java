@@ -22,7 +22,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The library example of README.md, as written there, on a real DEM. */
+/** The stage-level use README names (Renderer → RenderedImage → ImageOutput), on a real DEM. */
 class ReadmeExampleTest {
 
     @Test

@@ -1,8 +1,5 @@
 package io.github.jdem846.output;
 
-import java.awt.color.ColorSpace;
-import java.awt.color.ICC_ColorSpace;
-import java.awt.color.ICC_Profile;
 import java.awt.image.BufferedImage;
 import java.awt.image.Raster;
 import java.io.BufferedOutputStream;
@@ -18,7 +15,6 @@ import java.util.stream.IntStream;
 import java.util.zip.Adler32;
 import java.util.zip.CRC32;
 import java.util.zip.Deflater;
-import java.util.zip.DeflaterOutputStream;
 
 /**
  * Encodes 8-bit RGBA ({@code TYPE_INT_ARGB}; any other type through {@code getRGB}) and 8-bit gray
@@ -31,8 +27,9 @@ import java.util.zip.DeflaterOutputStream;
  *
  * <p>A segment ends with a sync flush (the empty stored block that byte-aligns the stream) and the next starts
  * from a fresh deflate state, so segments concatenate into one valid stream (as pigz and PngEncoder do); the
- * stream's Adler-32 is combined from the segments'. IDAT chunks carry {@link #IDAT_BYTES} each. Gray images keep
- * the ICC profile of their colour space (the JDK's gray profile) in an {@code iCCP} chunk, as PngEncoder wrote it.
+ * stream's Adler-32 is combined from the segments'. IDAT chunks carry {@link #IDAT_BYTES} each. No colour profile
+ * is written: the samples are display values, as gdaldem writes them (the JDK's {@code TYPE_BYTE_GRAY} colour space
+ * is linear gray, and tagging a hillshade with it made colour-managed viewers show it much lighter).
  */
 final class PngWriter {
 
@@ -81,10 +78,6 @@ final class PngWriter {
         h.writeByte(0);                                   // adaptive filtering
         h.writeByte(0);                                   // not interlaced
         chunk(out, "IHDR", ihdr.toByteArray(), ihdr.size());
-        byte[] iccp = iccp(image);
-        if (iccp != null) {
-            chunk(out, "iCCP", iccp, iccp.length);
-        }
         writeImageData(out, lines, compressionLevel, parallel);
         chunk(out, "IEND", new byte[0], 0);
         out.flush();
@@ -170,37 +163,6 @@ final class PngWriter {
         long s1 = ((a1 & 0xFFFF) + (a2 & 0xFFFF) + base - 1) % base;
         long s2 = (rem * (a1 & 0xFFFF) % base + (a1 >>> 16 & 0xFFFF) + (a2 >>> 16 & 0xFFFF) + base - rem) % base;
         return s1 | s2 << 16;
-    }
-
-    /** The {@code iCCP} payload for an image in a non-sRGB ICC colour space (the gray images), else null. */
-    private static byte[] iccp(BufferedImage image) throws IOException {
-        ColorSpace cs = image.getColorModel().getColorSpace();
-        if (cs.isCS_sRGB() || !(cs instanceof ICC_ColorSpace icc) || Scanlines.isRgbaFallback(image)) {
-            return null;
-        }
-        ICC_Profile profile = icc.getProfile();
-        ByteArrayOutputStream b = new ByteArrayOutputStream();
-        byte[] name = profileName(profile).getBytes(StandardCharsets.ISO_8859_1);
-        b.write(name, 0, Math.min(name.length, 79));
-        b.write(0);
-        b.write(0);                                          // compression method: deflate
-        try (DeflaterOutputStream z = new DeflaterOutputStream(b)) {
-            z.write(profile.getData());
-        }
-        return b.toByteArray();
-    }
-
-    /** The profile's description (its 'desc' tag's ASCII text), or {@code <noname>}. */
-    private static String profileName(ICC_Profile profile) {
-        byte[] desc = profile.getData(ICC_Profile.icSigProfileDescriptionTag);
-        if (desc == null) {
-            return "<noname>";
-        }
-        int end = 12;
-        while (end < desc.length && desc[end] != 0) {
-            end++;
-        }
-        return end > 12 ? new String(desc, 12, end - 12, StandardCharsets.US_ASCII) : "<noname>";
     }
 
     private static void chunk(DataOutputStream out, String type, byte[] data, int length) throws IOException {

@@ -114,7 +114,9 @@ class PngWriterTest {
                     .withMultiThreadedCompressionEnabled(false).toStream(reference);
             Chunks theirs = Chunks.of(reference.toByteArray());
             Chunks ours = Chunks.of(encode(image, 1, true));
-            assertEquals(theirs.others, ours.others, "IHDR, iCCP (gray), IEND");
+            List<String> expected = theirs.others.stream().filter(c -> !c.startsWith("iCCP")).toList();
+            assertEquals(expected, ours.others, "IHDR and IEND as PngEncoder's, no iCCP (gray values are display"
+                    + " values, as gdaldem writes them)");
             assertArrayEquals(inflate(theirs.idat), inflate(ours.idat), "the filtered rows");
         }
     }
