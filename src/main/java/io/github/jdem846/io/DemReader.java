@@ -1,7 +1,6 @@
 package io.github.jdem846.io;
 
 import io.github.jdem846.raster.Dem;
-import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.raster.GridGeometry;
 import java.io.IOException;

@@ -1,7 +1,6 @@
 package io.github.jdem846.io;
 
 import io.github.jdem846.geo.CrsInfo;
-import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.raster.GridGeometry;
 import java.io.IOException;
 import java.io.InputStream;

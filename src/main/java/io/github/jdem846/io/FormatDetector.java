@@ -1,6 +1,5 @@
 package io.github.jdem846.io;
 
-import io.github.jdem846.raster.DemFormatException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;

@@ -1,11 +1,10 @@
 package io.github.jdem846.io;
 
-import io.github.jdem846.geo.GeoKeys;
+import com.twelvemonkeys.imageio.plugins.tiff.TIFFImageReaderSpi;
 import io.github.jdem846.geo.CrsInfo;
-import io.github.jdem846.raster.DemFormatException;
+import io.github.jdem846.geo.GeoKeys;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.raster.PixelAnchor;
-import com.twelvemonkeys.imageio.plugins.tiff.TIFFImageReaderSpi;
 import java.awt.Rectangle;
 import java.awt.image.DataBuffer;
 import java.awt.image.Raster;
@@ -14,8 +13,8 @@ import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.file.Files;
-import java.nio.file.StandardOpenOption;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;

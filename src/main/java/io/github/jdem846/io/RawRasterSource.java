@@ -1,6 +1,5 @@
 package io.github.jdem846.io;
 
-import io.github.jdem846.raster.DemFormatException;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;

@@ -111,7 +111,7 @@ public record ReliefJob(Path input, Product product, Scene scene, Window window,
      * Reads what the picture needs and renders it.
      *
      * @throws IOException              naming the file when it cannot be read ({@link
-     *                                  io.github.jdem846.raster.DemFormatException})
+     *                                  io.github.jdem846.io.DemFormatException})
      * @throws IllegalArgumentException when the window lies outside the grid, or the sun cannot be placed
      * @throws InterruptedException     when the calling thread is interrupted
      */

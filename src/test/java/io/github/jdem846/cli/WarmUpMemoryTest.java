@@ -5,10 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.jdem846.io.DemFormatException;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.ReadRequest;
 import io.github.jdem846.io.Window;
-import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.testing.SingleStripTiff;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;

@@ -3,7 +3,6 @@ package io.github.jdem846.io;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
-import io.github.jdem846.raster.DemFormatException;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

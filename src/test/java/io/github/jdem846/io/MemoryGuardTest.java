@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import io.github.jdem846.raster.DemFormatException;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import com.twelvemonkeys.imageio.plugins.tiff.TIFFImageReaderSpi;
 import io.github.jdem846.raster.Dem;
-import io.github.jdem846.raster.DemFormatException;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -1,4 +1,4 @@
-package io.github.jdem846.raster;
+package io.github.jdem846.io;
 
 import java.io.IOException;
 import java.nio.file.Path;
