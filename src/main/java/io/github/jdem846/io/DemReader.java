@@ -1,5 +1,13 @@
 package io.github.jdem846.io;
 
+import io.github.jdem846.io.esri.BilFormat;
+import io.github.jdem846.io.esri.EsriAsciiSource;
+import io.github.jdem846.io.esri.GridFloatFormat;
+import io.github.jdem846.io.geotiff.GeoTiffSource;
+import io.github.jdem846.io.source.BlockReader;
+import io.github.jdem846.io.source.HgtFormat;
+import io.github.jdem846.io.source.MemoryGuard;
+import io.github.jdem846.io.source.RasterSource;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.raster.GridGeometry;
