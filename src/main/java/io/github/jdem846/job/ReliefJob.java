@@ -8,7 +8,6 @@ import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.output.WriteResult;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
-import io.github.jdem846.render.DemLoader;
 import io.github.jdem846.render.OutputSize;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.RenderedImage;

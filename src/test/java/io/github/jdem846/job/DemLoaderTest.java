@@ -1,4 +1,4 @@
-package io.github.jdem846.render;
+package io.github.jdem846.job;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -8,6 +8,7 @@ import io.github.jdem846.io.LoadedDem;
 import io.github.jdem846.io.ReadRequest;
 import io.github.jdem846.io.Window;
 import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.render.OutputSize;
 import java.io.IOException;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;

@@ -1,4 +1,4 @@
-package io.github.jdem846.render;
+package io.github.jdem846.job;
 
 import java.util.Locale;
 

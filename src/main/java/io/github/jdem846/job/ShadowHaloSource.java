@@ -1,4 +1,4 @@
-package io.github.jdem846.render;
+package io.github.jdem846.job;
 
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.ElevationStatistics;

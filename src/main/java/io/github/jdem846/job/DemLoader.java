@@ -1,4 +1,4 @@
-package io.github.jdem846.render;
+package io.github.jdem846.job;
 
 import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.io.DemInfo;
@@ -9,6 +9,7 @@ import io.github.jdem846.io.Window;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.DemResampler;
 import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.render.OutputSize;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Objects;
@@ -19,7 +20,7 @@ import java.util.Objects;
  * blocks needed are decoded) and finishes with an area-weighted resample to the exact size, so no stage ever runs
  * at full resolution for a smaller picture.
  */
-public final class DemLoader {
+final class DemLoader {
 
     /** The elevation statistics of a whole file, streamed on the first call and kept for the others. */
     @FunctionalInterface
