@@ -227,7 +227,7 @@ final class DemLoader {
         // keep whole pixels: step down by whole pixels when the grid edge is nearer
         while (source > available && pixels > 0) {
             pixels--;
-            source = (long) Math.round(pixels * factor);
+            source = Math.round(pixels * factor);
         }
         return (int) Math.max(0, Math.min(available, source));
     }
