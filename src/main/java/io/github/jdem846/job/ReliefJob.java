@@ -1,5 +1,6 @@
 package io.github.jdem846.job;
 
+import io.github.jdem846.internal.Clamp;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.Window;
@@ -13,7 +14,6 @@ import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.RenderedImage;
 import io.github.jdem846.render.Renderer;
 import io.github.jdem846.render.Scene;
-import io.github.jdem846.shade.Clamp;
 import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowOptions;

@@ -1,6 +1,6 @@
 package io.github.jdem846.output;
 
-import static io.github.jdem846.geo.GeoKeys.*;
+import static io.github.jdem846.internal.GeoKeys.*;
 
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.Ellipsoid;

@@ -1,6 +1,6 @@
 package io.github.jdem846.output;
 
-import io.github.jdem846.geo.GeoKeys;
+import io.github.jdem846.internal.GeoKeys;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.ByteBuffer;

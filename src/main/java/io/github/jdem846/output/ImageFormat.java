@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Locale;
 
 /** The image formats the renderer writes, chosen from the output file's extension (case-insensitive). */
-public enum ImageFormat {
+enum ImageFormat {
 
     /** PNG: 8-bit RGBA or 8-bit gray; georeferencing only in sidecar files. */
     PNG("pgw", ".png"),

@@ -1,5 +1,7 @@
 package io.github.jdem846.shade;
 
+import io.github.jdem846.internal.Brightness;
+import io.github.jdem846.internal.Clamp;
 import java.util.Objects;
 
 /**

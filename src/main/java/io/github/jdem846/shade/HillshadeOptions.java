@@ -1,5 +1,7 @@
 package io.github.jdem846.shade;
 
+import io.github.jdem846.internal.Brightness;
+
 /**
  * The knobs of the hillshade methods, immutable, with the original jDem846's defaults ({@link #DEFAULTS}).
  *

@@ -1,7 +1,8 @@
 package io.github.jdem846.io.geotiff;
 
-import static io.github.jdem846.geo.GeoKeys.*;
+import static io.github.jdem846.internal.GeoKeys.*;
 
+import io.github.jdem846.internal.GeoKeys;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Optional;

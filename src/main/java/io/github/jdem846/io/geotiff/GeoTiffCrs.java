@@ -1,21 +1,21 @@
 package io.github.jdem846.io.geotiff;
 
-import io.github.jdem846.geo.GeoKeys;
-import static io.github.jdem846.geo.GeoKeys.GEOGRAPHIC_TYPE;
-import static io.github.jdem846.geo.GeoKeys.GEOG_ANGULAR_UNITS;
-import static io.github.jdem846.geo.GeoKeys.GEOG_CITATION;
-import static io.github.jdem846.geo.GeoKeys.GEOG_ELLIPSOID;
-import static io.github.jdem846.geo.GeoKeys.GEOG_GEODETIC_DATUM;
-import static io.github.jdem846.geo.GeoKeys.GEOG_INV_FLATTENING;
-import static io.github.jdem846.geo.GeoKeys.GEOG_SEMI_MAJOR_AXIS;
-import static io.github.jdem846.geo.GeoKeys.GEOG_SEMI_MINOR_AXIS;
-import static io.github.jdem846.geo.GeoKeys.GT_CITATION;
-import static io.github.jdem846.geo.GeoKeys.GT_MODEL_TYPE;
-import static io.github.jdem846.geo.GeoKeys.PCS_CITATION;
-import static io.github.jdem846.geo.GeoKeys.PROJECTED_CS_TYPE;
-import static io.github.jdem846.geo.GeoKeys.PROJ_LINEAR_UNITS;
-import static io.github.jdem846.geo.GeoKeys.PROJ_LINEAR_UNIT_SIZE;
-import static io.github.jdem846.geo.GeoKeys.USER_DEFINED;
+import io.github.jdem846.internal.GeoKeys;
+import static io.github.jdem846.internal.GeoKeys.GEOGRAPHIC_TYPE;
+import static io.github.jdem846.internal.GeoKeys.GEOG_ANGULAR_UNITS;
+import static io.github.jdem846.internal.GeoKeys.GEOG_CITATION;
+import static io.github.jdem846.internal.GeoKeys.GEOG_ELLIPSOID;
+import static io.github.jdem846.internal.GeoKeys.GEOG_GEODETIC_DATUM;
+import static io.github.jdem846.internal.GeoKeys.GEOG_INV_FLATTENING;
+import static io.github.jdem846.internal.GeoKeys.GEOG_SEMI_MAJOR_AXIS;
+import static io.github.jdem846.internal.GeoKeys.GEOG_SEMI_MINOR_AXIS;
+import static io.github.jdem846.internal.GeoKeys.GT_CITATION;
+import static io.github.jdem846.internal.GeoKeys.GT_MODEL_TYPE;
+import static io.github.jdem846.internal.GeoKeys.PCS_CITATION;
+import static io.github.jdem846.internal.GeoKeys.PROJECTED_CS_TYPE;
+import static io.github.jdem846.internal.GeoKeys.PROJ_LINEAR_UNITS;
+import static io.github.jdem846.internal.GeoKeys.PROJ_LINEAR_UNIT_SIZE;
+import static io.github.jdem846.internal.GeoKeys.USER_DEFINED;
 
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.CrsResolver;

@@ -2,7 +2,7 @@ package io.github.jdem846.io.geotiff;
 
 import com.twelvemonkeys.imageio.plugins.tiff.TIFFImageReaderSpi;
 import io.github.jdem846.geo.CrsInfo;
-import io.github.jdem846.geo.GeoKeys;
+import io.github.jdem846.internal.GeoKeys;
 import io.github.jdem846.io.DemFormat;
 import io.github.jdem846.io.DemFormatException;
 import io.github.jdem846.io.DemInfo;

@@ -1,4 +1,4 @@
-package io.github.jdem846.shade;
+package io.github.jdem846.internal;
 
 /**
  * Clamps for per-cell loops, written with comparisons rather than {@link Math#min}/{@link Math#max} on doubles and

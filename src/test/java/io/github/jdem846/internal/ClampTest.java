@@ -1,4 +1,4 @@
-package io.github.jdem846.shade;
+package io.github.jdem846.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 

@@ -1,8 +1,9 @@
-package io.github.jdem846.shade;
+package io.github.jdem846.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.jdem846.shade.HillshadeOptions;
 import org.junit.jupiter.api.Test;
 
 class BrightnessTest {

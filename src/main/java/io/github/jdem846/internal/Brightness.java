@@ -1,4 +1,4 @@
-package io.github.jdem846.shade;
+package io.github.jdem846.internal;
 
 /**
  * The article's brightness adjustment (eq. 8) and the original jDem846's two tone steps that precede it. Pure

@@ -1,4 +1,4 @@
-package io.github.jdem846.geo;
+package io.github.jdem846.internal;
 
 /**
  * GeoTIFF tag and GeoKey numbers (OGC GeoTIFF 1.1) shared by the GeoTIFF reader and writer, and the EPSG unit codes
