@@ -11,11 +11,23 @@ public class DemFormatException extends IOException {
 
     private static final long serialVersionUID = 1L;
 
-    /** @param file the file at fault; @param problem what is wrong with it (and what would be right) */
+    /**
+     * A file that cannot be read.
+     *
+     * @param file    the file at fault
+     * @param problem what is wrong with it (and what would be right)
+     */
     public DemFormatException(Path file, String problem) {
         super(file + ": " + problem);
     }
 
+    /**
+     * A file that cannot be read, for a lower-level cause.
+     *
+     * @param file    the file at fault
+     * @param problem what is wrong with it (and what would be right)
+     * @param cause   the exception that revealed it
+     */
     public DemFormatException(Path file, String problem, Throwable cause) {
         super(file + ": " + problem, cause);
     }

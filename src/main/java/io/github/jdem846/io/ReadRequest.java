@@ -18,6 +18,7 @@ public record ReadRequest(Window window, int decimation, long memoryLimit) {
     /** The whole grid at full resolution. */
     public static final ReadRequest FULL = new ReadRequest(null, 1);
 
+    /** @throws IllegalArgumentException for a decimation below 1 or a negative memory limit */
     public ReadRequest {
         if (decimation < 1) {
             throw new IllegalArgumentException("decimation must be a whole number ≥ 1, got " + decimation);
@@ -27,22 +28,42 @@ public record ReadRequest(Window window, int decimation, long memoryLimit) {
         }
     }
 
-    /** A window (or {@code null}: the whole grid) at decimation {@code decimation}, limited only by the heap. */
+    /**
+     * A request limited only by the heap.
+     *
+     * @param window     the part to read, or {@code null} for the whole grid
+     * @param decimation block size ≥ 1
+     */
     public ReadRequest(Window window, int decimation) {
         this(window, decimation, Long.MAX_VALUE);
     }
 
-    /** A window at full resolution. */
+    /**
+     * A window at full resolution.
+     *
+     * @param window the part to read
+     * @return the request
+     */
     public static ReadRequest of(Window window) {
         return new ReadRequest(window, 1);
     }
 
-    /** The whole grid, box-averaged over {@code factor × factor} blocks. */
+    /**
+     * The whole grid, box-averaged.
+     *
+     * @param factor the block size: {@code factor × factor} cells make one
+     * @return the request
+     */
     public static ReadRequest decimated(int factor) {
         return new ReadRequest(null, factor);
     }
 
-    /** A copy that may take at most {@code bytes} of heap. */
+    /**
+     * A copy with a memory limit.
+     *
+     * @param bytes most heap bytes the read may take
+     * @return the new request
+     */
     public ReadRequest withMemoryLimit(long bytes) {
         return new ReadRequest(window, decimation, bytes);
     }
