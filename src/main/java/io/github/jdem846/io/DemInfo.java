@@ -19,7 +19,6 @@ import java.util.Objects;
 public record DemInfo(String source, DemFormat format, SampleType dataType, int bands, GridGeometry geometry,
                       Double declaredNoData, List<String> notices) {
 
-    /** @throws NullPointerException for a missing component other than {@code declaredNoData} */
     public DemInfo {
         Objects.requireNonNull(source, "source");
         Objects.requireNonNull(format, "format");

@@ -18,7 +18,6 @@ public record ReadRequest(Window window, int decimation, long memoryLimit) {
     /** The whole grid at full resolution. */
     public static final ReadRequest FULL = new ReadRequest(null, 1);
 
-    /** @throws IllegalArgumentException for a decimation below 1 or a negative memory limit */
     public ReadRequest {
         if (decimation < 1) {
             throw new IllegalArgumentException("decimation must be a whole number ≥ 1, got " + decimation);

@@ -58,7 +58,6 @@ import java.util.Objects;
 public record ReliefJob(Path input, Product product, Scene scene, Window window, OutputSize size, Sun sun,
                         Body body, RenderSettings execution) {
 
-    /** @throws NullPointerException for a missing component other than {@code input} and {@code window} */
     public ReliefJob {
         Objects.requireNonNull(product, "product");
         Objects.requireNonNull(scene, "scene");

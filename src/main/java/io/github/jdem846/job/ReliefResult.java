@@ -28,7 +28,6 @@ import java.util.Objects;
 public record ReliefResult(ReliefJob job, DemInfo source, GridGeometry geometry, int[] argb, byte[] gray,
                            SunPosition sun) {
 
-    /** @throws IllegalArgumentException unless exactly one of {@code argb} and {@code gray} is given */
     public ReliefResult {
         Objects.requireNonNull(job, "job");
         Objects.requireNonNull(geometry, "geometry");

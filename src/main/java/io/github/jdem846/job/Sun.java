@@ -25,7 +25,6 @@ public record Sun(LightDirection direction, ZonedDateTime time, LatLon place, bo
     /** The original's light: azimuth 320°, elevation 25°. */
     public static final Sun ORIGINAL_DEFAULT = fixed(LightDirection.ORIGINAL_DEFAULT);
 
-    /** @throws IllegalArgumentException unless exactly one of a direction and a time is given, as described above */
     public Sun {
         if ((direction == null) == (time == null)) {
             throw new IllegalArgumentException("give either a fixed light direction or a date and time, not both");

@@ -18,7 +18,6 @@ public record LightDirection(double azimuthDegrees, double elevationDegrees) {
     /** The original jDem846's default light: azimuth 320°, elevation 25°. */
     public static final LightDirection ORIGINAL_DEFAULT = new LightDirection(320, 25);
 
-    /** @throws IllegalArgumentException for an azimuth that is not finite or an elevation outside −90 … 90 */
     public LightDirection {
         if (!Double.isFinite(azimuthDegrees)) {
             throw new IllegalArgumentException("sun azimuth must be a finite number of degrees, got "

@@ -26,7 +26,6 @@ public record OutputSize(int width, int height, double scale) {
     /** Most pixels in a picture: the longest Java array, which holds them (one int per ARGB pixel). */
     public static final long MAX_PIXELS = Integer.MAX_VALUE - 8L;
 
-    /** @throws IllegalArgumentException for a side or scale out of range, or both a scale and a side */
     public OutputSize {
         requireSide(width, "width", true);
         requireSide(height, "height", true);

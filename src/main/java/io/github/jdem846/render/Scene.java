@@ -30,7 +30,6 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
                     ShadowAlgorithm shadows, ShadowOptions shadowOptions, LightField light,
                     double shadowIntensity, double fade, ElevationStatistics tintRange) {
 
-    /** @throws IllegalArgumentException for a shadow intensity outside 0 … 1 or a fade outside 0 … 2 */
     public Scene {
         Objects.requireNonNull(hillshadeOptions, "hillshadeOptions");
         Objects.requireNonNull(shadowOptions, "shadowOptions");
