@@ -84,17 +84,17 @@ final class DemLoader {
     public record Loaded(DemInfo info, Dem dem, int col, int row, int width, int height,
                          ElevationStatistics fileStatistics) {
 
-        /** The output window's cells within {@code dem}. */
+        /** @return the output window's cells within {@code dem} */
         public io.github.jdem846.shadow.CellWindow area() {
             return new io.github.jdem846.shadow.CellWindow(col, row, width, height);
         }
 
-        /** True when the grid holds nothing but the output window. */
+        /** @return true when the grid holds nothing but the output window */
         public boolean hasNoHalo() {
             return col == 0 && row == 0 && width == dem.width() && height == dem.height();
         }
 
-        /** The output window of the grid itself. */
+        /** @return the output window of the grid itself */
         public Dem windowDem() {
             return hasNoHalo() ? dem : dem.crop(col, row, width, height);
         }

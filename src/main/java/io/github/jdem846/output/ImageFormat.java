@@ -20,12 +20,12 @@ enum ImageFormat {
         this.extensions = List.of(extensions);
     }
 
-    /** The file extensions of this format, with the dot, lower case (the first is the preferred one). */
+    /** @return the file extensions of this format, with the dot, lower case (the first is the preferred one) */
     public List<String> extensions() {
         return extensions;
     }
 
-    /** The ESRI world-file extension of this format, without the dot: {@code pgw} or {@code tfw}. */
+    /** @return the ESRI world-file extension of this format, without the dot: {@code pgw} or {@code tfw} */
     public String worldFileExtension() {
         return worldFileExtension;
     }
@@ -49,7 +49,7 @@ enum ImageFormat {
                 + "supported: " + supportedExtensions());
     }
 
-    /** All supported extensions, e.g. {@code ".png, .tif, .tiff"}. */
+    /** @return all supported extensions, e.g. {@code ".png, .tif, .tiff"} */
     public static String supportedExtensions() {
         StringBuilder sb = new StringBuilder();
         for (ImageFormat format : values()) {
