@@ -1,7 +1,7 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.job.InsufficientHeapException;
 import io.github.jdem846.output.OutputOverwritesInputException;
-import io.github.jdem846.render.InsufficientHeapException;
 import java.io.PrintWriter;
 import java.util.List;
 import picocli.CommandLine;

@@ -252,18 +252,18 @@ final class Converters {
                 return null;
             }
             try {
-                return HillshadeMethod.fromName(text);
+                return MethodNames.hillshade(text);
             } catch (IllegalArgumentException e) {
                 throw new TypeConversionException(e.getMessage() + ", or none");
             }
         }
     }
 
-    /** {@code --method} of hillshade: {@link HillshadeMethod#fromName}. */
+    /** {@code --method} of hillshade: {@link MethodNames#hillshade}. */
     static final class Method implements ITypeConverter<HillshadeMethod> {
         @Override
         public HillshadeMethod convert(String text) {
-            return checked(() -> HillshadeMethod.fromName(text));
+            return checked(() -> MethodNames.hillshade(text));
         }
     }
 

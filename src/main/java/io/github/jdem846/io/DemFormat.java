@@ -19,7 +19,7 @@ public enum DemFormat {
         this.displayName = displayName;
     }
 
-    /** The name shown to people, e.g. "ESRI GridFloat". */
+    /** @return the name shown to people, e.g. "ESRI GridFloat" */
     public String displayName() {
         return displayName;
     }

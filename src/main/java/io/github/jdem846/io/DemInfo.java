@@ -27,23 +27,28 @@ public record DemInfo(String source, DemFormat format, SampleType dataType, int 
         notices = List.copyOf(notices);
     }
 
-    /** Columns. */
+    /** @return columns */
     public int width() {
         return geometry.width();
     }
 
-    /** Rows. */
+    /** @return rows */
     public int height() {
         return geometry.height();
     }
 
-    /** This header with {@link GridGeometry#withDefaultEllipsoid(io.github.jdem846.geo.Ellipsoid)} applied. */
+    /**
+     * This header with {@link GridGeometry#withDefaultEllipsoid(io.github.jdem846.geo.Ellipsoid)} applied.
+     *
+     * @param body the ellipsoid for a grid whose file names none
+     * @return this header, or a copy on {@code body}
+     */
     public DemInfo withDefaultEllipsoid(io.github.jdem846.geo.Ellipsoid body) {
         GridGeometry g = geometry.withDefaultEllipsoid(body);
         return g == geometry ? this : new DemInfo(source, format, dataType, bands, g, declaredNoData, notices);
     }
 
-    /** The declared no-data value as {@link io.github.jdem846.raster.Dem} takes it: NaN when none. */
+    /** @return the declared no-data value as {@link io.github.jdem846.raster.Dem} takes it: NaN when none */
     public double noDataOrNaN() {
         return declaredNoData != null ? declaredNoData : Double.NaN;
     }

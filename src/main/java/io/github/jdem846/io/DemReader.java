@@ -1,7 +1,14 @@
 package io.github.jdem846.io;
 
+import io.github.jdem846.io.esri.BilFormat;
+import io.github.jdem846.io.esri.EsriAsciiSource;
+import io.github.jdem846.io.esri.GridFloatFormat;
+import io.github.jdem846.io.geotiff.GeoTiffSource;
+import io.github.jdem846.io.source.BlockReader;
+import io.github.jdem846.io.source.HgtFormat;
+import io.github.jdem846.io.source.MemoryGuard;
+import io.github.jdem846.io.source.RasterSource;
 import io.github.jdem846.raster.Dem;
-import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.raster.GridGeometry;
 import java.io.IOException;
@@ -29,7 +36,13 @@ public final class DemReader {
     private DemReader() {
     }
 
-    /** Reads the whole file at full resolution. */
+    /**
+     * Reads the whole file at full resolution.
+     *
+     * @param file the DEM file (a {@code .hdr} stands for its data file)
+     * @return the grid, no-data as NaN
+     * @throws IOException naming the file when it cannot be read ({@link DemFormatException})
+     */
     public static Dem read(Path file) throws IOException {
         return read(file, ReadRequest.FULL);
     }
@@ -37,13 +50,24 @@ public final class DemReader {
     /**
      * Reads the window and decimation of {@code request}.
      *
+     * @param file    the DEM file
+     * @param request the window, the decimation and the memory limit
+     * @return the grid read
+     * @throws IOException              naming the file when it cannot be read
      * @throws IllegalArgumentException when the window lies outside the grid (the message gives its size)
      */
     public static Dem read(Path file, ReadRequest request) throws IOException {
         return load(file, request).dem();
     }
 
-    /** Reads like {@link #read(Path, ReadRequest)} and also returns the file's header information. */
+    /**
+     * Reads like {@link #read(Path, ReadRequest)} and also returns the file's header information.
+     *
+     * @param file    the DEM file
+     * @param request the window, the decimation and the memory limit
+     * @return the grid with the header and the statistics of the cells read
+     * @throws IOException naming the file when it cannot be read
+     */
     public static LoadedDem load(Path file, ReadRequest request) throws IOException {
         return load(file, request, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
     }
@@ -191,13 +215,22 @@ public final class DemReader {
      * the ESRI formats. An output must not be written over any of them; see
      * {@link io.github.jdem846.output.InputProtection}.
      *
+     * @param file the DEM file
+     * @return the data file, then its sidecars that exist
      * @throws DemFormatException when {@code file} is missing or not a DEM this program reads
+     * @throws IOException        when the file cannot be examined
      */
     public static java.util.List<Path> filesOf(Path file) throws IOException {
         return InputFiles.of(Objects.requireNonNull(file, "file"));
     }
 
-    /** Reads the header only: format, size, data type, georeferencing, CRS and declared no-data. */
+    /**
+     * Reads the header only.
+     *
+     * @param file the DEM file
+     * @return format, size, data type, georeferencing, CRS and declared no-data
+     * @throws IOException naming the file when it cannot be read
+     */
     public static DemInfo inspect(Path file) throws IOException {
         try (RasterSource source = open(file)) {
             return source.info();
@@ -207,6 +240,10 @@ public final class DemReader {
     /**
      * Min, max and valid count of the whole file, streamed band by band without holding the grid in memory (so
      * it works for grids larger than the heap), in row bands read at once as {@link #load} reads them.
+     *
+     * @param file the DEM file
+     * @return the statistics of every valid cell at full resolution
+     * @throws IOException naming the file when it cannot be read
      */
     public static ElevationStatistics statistics(Path file) throws IOException {
         return statistics(file, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
@@ -226,12 +263,23 @@ public final class DemReader {
         }
     }
 
-    /** Reads the bundled sample DEM (see {@link #SAMPLE_RESOURCE}). */
+    /**
+     * Reads the bundled sample DEM (see {@link #SAMPLE_RESOURCE}).
+     *
+     * @return the grid
+     * @throws IOException if the sample cannot be copied out of the jar
+     */
     public static Dem readSample() throws IOException {
         return loadSample(ReadRequest.FULL).dem();
     }
 
-    /** Reads the bundled sample DEM with its header information. */
+    /**
+     * Reads the bundled sample DEM with its header information.
+     *
+     * @param request the window, the decimation and the memory limit
+     * @return the grid with the header
+     * @throws IOException if the sample cannot be copied out of the jar
+     */
     public static LoadedDem loadSample(ReadRequest request) throws IOException {
         Path tmp = Files.createTempFile("jdem846-sample-", ".tif");
         try {

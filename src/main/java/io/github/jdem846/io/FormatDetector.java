@@ -1,6 +1,7 @@
 package io.github.jdem846.io;
 
-import io.github.jdem846.raster.DemFormatException;
+import io.github.jdem846.io.esri.SidecarCrs;
+import io.github.jdem846.io.source.RegularFiles;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;

@@ -1,5 +1,6 @@
 package io.github.jdem846.io;
 
+import io.github.jdem846.io.esri.SidecarCrs;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;

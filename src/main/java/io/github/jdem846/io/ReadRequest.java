@@ -27,22 +27,42 @@ public record ReadRequest(Window window, int decimation, long memoryLimit) {
         }
     }
 
-    /** A window (or {@code null}: the whole grid) at decimation {@code decimation}, limited only by the heap. */
+    /**
+     * A request limited only by the heap.
+     *
+     * @param window     the part to read, or {@code null} for the whole grid
+     * @param decimation block size ≥ 1
+     */
     public ReadRequest(Window window, int decimation) {
         this(window, decimation, Long.MAX_VALUE);
     }
 
-    /** A window at full resolution. */
+    /**
+     * A window at full resolution.
+     *
+     * @param window the part to read
+     * @return the request
+     */
     public static ReadRequest of(Window window) {
         return new ReadRequest(window, 1);
     }
 
-    /** The whole grid, box-averaged over {@code factor × factor} blocks. */
+    /**
+     * The whole grid, box-averaged.
+     *
+     * @param factor the block size: {@code factor × factor} cells make one
+     * @return the request
+     */
     public static ReadRequest decimated(int factor) {
         return new ReadRequest(null, factor);
     }
 
-    /** A copy that may take at most {@code bytes} of heap. */
+    /**
+     * A copy with a memory limit.
+     *
+     * @param bytes most heap bytes the read may take
+     * @return the new request
+     */
     public ReadRequest withMemoryLimit(long bytes) {
         return new ReadRequest(window, decimation, bytes);
     }

@@ -9,12 +9,28 @@ import io.github.jdem846.raster.GridRequestException;
  */
 public sealed interface Window permits Window.Cells, Window.World {
 
-    /** The cells {@code [col, col+width) × [row, row+height)}; row 0 is north. */
+    /**
+     * The cells {@code [col, col+width) × [row, row+height)}; row 0 is north.
+     *
+     * @param col    first column, ≥ 0
+     * @param row    first row (north), ≥ 0
+     * @param width  columns, ≥ 1
+     * @param height rows, ≥ 1
+     * @return the window
+     */
     static Cells cells(int col, int row, int width, int height) {
         return new Cells(col, row, width, height);
     }
 
-    /** The cells that intersect the world box (CRS units; west &lt; east, south &lt; north). */
+    /**
+     * The cells that intersect a world box, in the grid's CRS units.
+     *
+     * @param west  minimum x
+     * @param south minimum y
+     * @param east  maximum x, above {@code west}
+     * @param north maximum y, above {@code south}
+     * @return the window
+     */
     static World world(double west, double south, double east, double north) {
         return new World(west, south, east, north);
     }
@@ -24,6 +40,8 @@ public sealed interface Window permits Window.Cells, Window.World {
      *
      * @throws GridRequestException when the window is outside the grid (cells) or does not intersect it (world);
      *                               the message gives the grid's size or extent
+     * @param grid the grid to read from
+     * @return the cells to read
      */
     Cells resolve(GridGeometry grid);
 

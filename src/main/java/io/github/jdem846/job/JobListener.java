@@ -17,15 +17,27 @@ public interface JobListener extends RenderProgress {
     default void update(String stage, long done, long total) {
     }
 
-    /** Something the user should know (an assumed CRS, a band ignored, a projection's scale factor, …). */
+    /**
+     * Something the user should know.
+     *
+     * @param message one line: an assumed CRS, a band ignored, a projection's scale factor, …
+     */
     default void notice(String message) {
     }
 
-    /** A phase ended: "read", then the product's stage ("render", "hillshade", "tint", "shadows"), then "write". */
+    /**
+     * A phase ended.
+     *
+     * @param phase "read", then the product's stage ("render", "hillshade", "tint", "shadows"), then "write"
+     */
     default void phaseDone(String phase) {
     }
 
-    /** The sun by date and time, as computed at the centre of the grid read. */
+    /**
+     * The sun by date and time was computed.
+     *
+     * @param sun its position at the centre of the grid read
+     */
     default void sun(SunPosition sun) {
     }
 }

@@ -1,5 +1,6 @@
 package io.github.jdem846.job;
 
+import io.github.jdem846.internal.Clamp;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.Window;
@@ -8,13 +9,11 @@ import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.output.WriteResult;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
-import io.github.jdem846.render.DemLoader;
 import io.github.jdem846.render.OutputSize;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.RenderedImage;
 import io.github.jdem846.render.Renderer;
 import io.github.jdem846.render.Scene;
-import io.github.jdem846.shade.Clamp;
 import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowOptions;
@@ -68,41 +67,92 @@ public record ReliefJob(Path input, Product product, Scene scene, Window window,
         Objects.requireNonNull(execution, "execution");
     }
 
-    /** The whole of {@code dem} as a relief picture with the original's defaults, on every processor. */
+    /**
+     * The whole of {@code dem} as a relief picture with the original's defaults, on every processor.
+     *
+     * @param dem the DEM file
+     * @return the job, to be refined with the {@code with…} methods
+     */
     public static ReliefJob of(Path dem) {
         return new ReliefJob(dem, Product.RELIEF, Scene.defaults(), null, OutputSize.FULL, Sun.ORIGINAL_DEFAULT,
                 Body.EARTH, RenderSettings.defaults());
     }
 
-    /** The bundled sample DEM (Big Tujunga, California, 600 × 400 cells) with the original's defaults. */
+    /**
+     * The bundled sample DEM (Big Tujunga, California, 600 × 400 cells) with the original's defaults.
+     *
+     * @return the job, to be refined with the {@code with…} methods
+     */
     public static ReliefJob ofSample() {
         return of(null);
     }
 
+    /**
+     * A copy with another {@code product}.
+     *
+     * @param value what to make
+     * @return the new job
+     */
     public ReliefJob withProduct(Product value) {
         return new ReliefJob(input, value, scene, window, size, sun, body, execution);
     }
 
+    /**
+     * A copy with another {@code scene}.
+     *
+     * @param value the stages and their settings
+     * @return the new job
+     */
     public ReliefJob withScene(Scene value) {
         return new ReliefJob(input, product, value, window, size, sun, body, execution);
     }
 
+    /**
+     * A copy with another {@code window}.
+     *
+     * @param value the part of the DEM to draw, or {@code null} for all of it
+     * @return the new job
+     */
     public ReliefJob withWindow(Window value) {
         return new ReliefJob(input, product, scene, value, size, sun, body, execution);
     }
 
+    /**
+     * A copy with another {@code size}.
+     *
+     * @param value the picture's size
+     * @return the new job
+     */
     public ReliefJob withSize(OutputSize value) {
         return new ReliefJob(input, product, scene, window, value, sun, body, execution);
     }
 
+    /**
+     * A copy with another {@code sun}.
+     *
+     * @param value the light
+     * @return the new job
+     */
     public ReliefJob withSun(Sun value) {
         return new ReliefJob(input, product, scene, window, size, value, body, execution);
     }
 
+    /**
+     * A copy with another {@code body}.
+     *
+     * @param value the body a DEM whose file names no ellipsoid lies on
+     * @return the new job
+     */
     public ReliefJob withBody(Body value) {
         return new ReliefJob(input, product, scene, window, size, sun, value, execution);
     }
 
+    /**
+     * A copy with another {@code execution}.
+     *
+     * @param value threads and tile size
+     * @return the new job
+     */
     public ReliefJob withExecution(RenderSettings value) {
         return new ReliefJob(input, product, scene, window, size, sun, body, value);
     }
@@ -110,8 +160,10 @@ public record ReliefJob(Path input, Product product, Scene scene, Window window,
     /**
      * Reads what the picture needs and renders it.
      *
+     * @param listener told of progress, notices, the sun used and the end of each phase
+     * @return the picture
      * @throws IOException              naming the file when it cannot be read ({@link
-     *                                  io.github.jdem846.raster.DemFormatException})
+     *                                  io.github.jdem846.io.DemFormatException})
      * @throws IllegalArgumentException when the window lies outside the grid, or the sun cannot be placed
      * @throws InterruptedException     when the calling thread is interrupted
      */
@@ -139,6 +191,10 @@ public record ReliefJob(Path input, Product product, Scene scene, Window window,
      * @throws IllegalArgumentException when the job has a window or a size other than {@link OutputSize#FULL}
      *                                  (crop or resample the grid first: {@link Dem#crop}, {@link
      *                                  io.github.jdem846.raster.DemResampler})
+     * @param dem      the grid to draw
+     * @param listener told of progress, the sun used and the end of each phase
+     * @return the picture
+     * @throws InterruptedException when the calling thread is interrupted
      */
     public ReliefResult run(Dem dem, JobListener listener) throws InterruptedException {
         Objects.requireNonNull(dem, "dem");
@@ -182,6 +238,13 @@ public record ReliefJob(Path input, Product product, Scene scene, Window window,
     /**
      * Runs the job and writes the product to {@code file} ({@link ReliefResult#write}); an output that would
      * replace or delete a file of the input is refused before anything is read ({@link InputProtection}).
+     *
+     * @param file     the image file (its extension chooses the format)
+     * @param options  how to write it
+     * @param listener told of progress, notices, the sun used and the end of each phase
+     * @return the files written
+     * @throws IOException          when the input cannot be read or the output cannot be written
+     * @throws InterruptedException when the calling thread is interrupted
      */
     public WriteResult runAndWrite(Path file, WriteOptions options, JobListener listener)
             throws IOException, InterruptedException {
@@ -199,7 +262,10 @@ public record ReliefJob(Path input, Product product, Scene scene, Window window,
      * its {@code .hdr} or {@code .prj}); nothing to check for the bundled sample or a file that is not a DEM (the
      * read reports that).
      *
+     * @param file    the image file to be written
+     * @param options how it will be written (its sidecars count too)
      * @throws io.github.jdem846.output.OutputOverwritesInputException naming both files
+     * @throws IOException when the output's place cannot be checked
      */
     public void checkOutput(Path file, WriteOptions options) throws IOException {
         if (input == null) {

@@ -44,17 +44,21 @@ public record ReliefResult(ReliefJob job, DemInfo source, GridGeometry geometry,
         return new ReliefResult(job, source, geometry, null, Objects.requireNonNull(gray, "gray"), sun);
     }
 
-    /** Pixels across. */
+    /** @return pixels across */
     public int width() {
         return geometry.width();
     }
 
-    /** Pixels down. */
+    /** @return pixels down */
     public int height() {
         return geometry.height();
     }
 
-    /** The pixels as a {@link BufferedImage} backed by them (no copy): {@code TYPE_INT_ARGB} or {@code TYPE_BYTE_GRAY}. */
+    /**
+     * The pixels as an image.
+     *
+     * @return a {@link BufferedImage} backed by the pixels (no copy): {@code TYPE_INT_ARGB} or {@code TYPE_BYTE_GRAY}
+     */
     public BufferedImage toBufferedImage() {
         return argb != null ? ImageOutput.toBufferedImage(argb, width(), height())
                 : ImageOutput.toBufferedImage(gray, width(), height());
@@ -65,6 +69,11 @@ public record ReliefResult(ReliefJob job, DemInfo source, GridGeometry geometry,
      * A hillshade's GeoTIFF marks 0 as no-data unless {@code options} names another value; a shadow mask has no
      * no-data. An output that would replace or delete a file of the input is refused ({@link
      * ReliefJob#checkOutput}).
+     *
+     * @param file    the image file (its extension chooses the format)
+     * @param options how to write it
+     * @return the files written
+     * @throws IOException when the file cannot be written, or is a file of the input
      */
     public WriteResult write(Path file, WriteOptions options) throws IOException {
         job.checkOutput(file, options);

@@ -34,37 +34,68 @@ public record Sun(LightDirection direction, ZonedDateTime time, LatLon place, bo
         }
     }
 
-    /** A fixed light. */
+    /**
+     * A fixed light.
+     *
+     * @param direction where the light comes from
+     * @return the sun
+     */
     public static Sun fixed(LightDirection direction) {
         return new Sun(Objects.requireNonNull(direction, "direction"), null, null, false, false);
     }
 
-    /** A fixed light from {@code azimuth} (degrees clockwise from north) and {@code elevation} degrees. */
+    /**
+     * A fixed light.
+     *
+     * @param azimuth   degrees clockwise from north
+     * @param elevation degrees above the horizon
+     * @return the sun
+     */
     public static Sun fixed(double azimuth, double elevation) {
         return fixed(new LightDirection(azimuth, elevation));
     }
 
-    /** The real sun at {@code time}, seen from the centre of the grid. */
+    /**
+     * The real sun, seen from the centre of the grid.
+     *
+     * @param time the date and time, with its zone or offset
+     * @return the sun
+     */
     public static Sun at(ZonedDateTime time) {
         return new Sun(null, Objects.requireNonNull(time, "time"), null, false, false);
     }
 
-    /** The same sun seen from {@code where} (for a DEM whose CRS is unknown). */
+    /**
+     * The same sun seen from another place.
+     *
+     * @param where the latitude and longitude (for a DEM whose CRS is unknown)
+     * @return the new sun
+     */
     public Sun seenFrom(LatLon where) {
         return new Sun(direction, time, where, perTile, twilight);
     }
 
-    /** The same sun, computed for every tile from its own latitude and longitude. */
+    /**
+     * The same sun, computed or not for every tile from its own latitude and longitude.
+     *
+     * @param value true for a sun per tile
+     * @return the new sun
+     */
     public Sun perTile(boolean value) {
         return new Sun(direction, time, place, value, twilight);
     }
 
-    /** The same sun with the original's twilight fade. */
+    /**
+     * The same sun with or without the original's twilight fade.
+     *
+     * @param value true to darken the scene from zenith 90° to 108°
+     * @return the new sun
+     */
     public Sun withTwilight(boolean value) {
         return new Sun(direction, time, place, perTile, value);
     }
 
-    /** True when the sun is given by date and time. */
+    /** @return true when the sun is given by date and time */
     public boolean byTime() {
         return time != null;
     }

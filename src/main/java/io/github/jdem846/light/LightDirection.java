@@ -30,7 +30,12 @@ public record LightDirection(double azimuthDegrees, double elevationDegrees) {
         azimuthDegrees = normalizeAzimuth(azimuthDegrees);
     }
 
-    /** {@code degrees} reduced into [0, 360), with −0.0 and values that round to 360 mapped to 0. */
+    /**
+     * An azimuth reduced into [0, 360).
+     *
+     * @param degrees any finite azimuth
+     * @return the same direction in [0, 360), with −0.0 and values that round to 360 mapped to 0
+     */
     public static double normalizeAzimuth(double degrees) {
         double a = degrees % 360.0;
         if (a < 0) {
@@ -47,6 +52,8 @@ public record LightDirection(double azimuthDegrees, double elevationDegrees) {
      * the same azimuth and tan(elevation′) = tan(elevation)/k, so a ray's rise per metre compared with true heights
      * equals its rise compared with exaggerated ones. A sun at or below the horizon or at the zenith is unchanged.
      *
+     * @param k the height scale (the z-factor)
+     * @return the light for the unexaggerated heights
      * @throws IllegalArgumentException unless {@code k} is a finite number &gt; 0
      */
     public LightDirection forHeightsScaledBy(double k) {
@@ -60,27 +67,27 @@ public record LightDirection(double azimuthDegrees, double elevationDegrees) {
         return new LightDirection(azimuthDegrees, Math.toDegrees(Math.atan2(Math.sin(e), k * Math.cos(e))));
     }
 
-    /** East component of the unit vector toward the light. */
+    /** @return the east component of the unit vector toward the light */
     public double east() {
         return Math.cos(Math.toRadians(elevationDegrees)) * Math.sin(Math.toRadians(azimuthDegrees));
     }
 
-    /** North component of the unit vector toward the light. */
+    /** @return the north component of the unit vector toward the light */
     public double north() {
         return Math.cos(Math.toRadians(elevationDegrees)) * Math.cos(Math.toRadians(azimuthDegrees));
     }
 
-    /** Up component of the unit vector toward the light (sin of the elevation). */
+    /** @return the up component of the unit vector toward the light (sin of the elevation) */
     public double up() {
         return Math.sin(Math.toRadians(elevationDegrees));
     }
 
-    /** True when the light is at or below the horizon: no direct light reaches any cell. */
+    /** @return true when the light is at or below the horizon: no direct light reaches any cell */
     public boolean isBelowHorizon() {
         return elevationDegrees <= 0;
     }
 
-    /** True when the light is at the zenith: nothing casts a shadow. */
+    /** @return true when the light is at the zenith: nothing casts a shadow */
     public boolean isAtZenith() {
         return elevationDegrees >= 90;
     }

@@ -6,16 +6,27 @@ package io.github.jdem846.light;
  */
 public interface LightField {
 
-    /** The light at cell ({@code col}, {@code row}). */
+    /**
+     * The light at one cell.
+     *
+     * @param col column of the grid, 0 = west
+     * @param row row of the grid, 0 = north
+     * @return where the light comes from there
+     */
     LightDirection at(int col, int row);
 
-    /** The light at the centre of the grid; used where one direction must serve the whole grid. */
+    /** @return the light at the centre of the grid; used where one direction must serve the whole grid */
     LightDirection central();
 
-    /** True when {@link #at} returns {@link #central()} everywhere. */
+    /** @return true when {@link #at} returns {@link #central()} everywhere */
     boolean isUniform();
 
-    /** The same light everywhere. */
+    /**
+     * The same light everywhere.
+     *
+     * @param light the direction
+     * @return the field
+     */
     static LightField uniform(LightDirection light) {
         java.util.Objects.requireNonNull(light, "light");
         return new LightField() {

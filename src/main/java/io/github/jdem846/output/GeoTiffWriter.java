@@ -1,6 +1,6 @@
 package io.github.jdem846.output;
 
-import io.github.jdem846.geo.GeoKeys;
+import io.github.jdem846.internal.GeoKeys;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.ByteBuffer;
@@ -174,7 +174,7 @@ final class GeoTiffWriter {
             f.put(33550, Field.doubles(sx, sy, 0));                       // ModelPixelScale
             // PixelIsArea: raster point (0, 0) is the outer north-west corner of the first pixel.
             f.put(33922, Field.doubles(0, 0, 0, geo.westX(), geo.northY(), 0)); // ModelTiepoint
-            GeoKeyDirectory keys = GeoKeyDirectory.of(geo.crs());
+            GeoKeyWriter keys = GeoKeyWriter.of(geo.crs());
             int[] dir = new int[keys.directory().length];
             for (int i = 0; i < dir.length; i++) {
                 dir[i] = keys.directory()[i];

@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Locale;
 
 /** The image formats the renderer writes, chosen from the output file's extension (case-insensitive). */
-public enum ImageFormat {
+enum ImageFormat {
 
     /** PNG: 8-bit RGBA or 8-bit gray; georeferencing only in sidecar files. */
     PNG("pgw", ".png"),
@@ -20,12 +20,12 @@ public enum ImageFormat {
         this.extensions = List.of(extensions);
     }
 
-    /** The file extensions of this format, with the dot, lower case (the first is the preferred one). */
+    /** @return the file extensions of this format, with the dot, lower case (the first is the preferred one) */
     public List<String> extensions() {
         return extensions;
     }
 
-    /** The ESRI world-file extension of this format, without the dot: {@code pgw} or {@code tfw}. */
+    /** @return the ESRI world-file extension of this format, without the dot: {@code pgw} or {@code tfw} */
     public String worldFileExtension() {
         return worldFileExtension;
     }
@@ -49,7 +49,7 @@ public enum ImageFormat {
                 + "supported: " + supportedExtensions());
     }
 
-    /** All supported extensions, e.g. {@code ".png, .tif, .tiff"}. */
+    /** @return all supported extensions, e.g. {@code ".png, .tif, .tiff"} */
     public static String supportedExtensions() {
         StringBuilder sb = new StringBuilder();
         for (ImageFormat format : values()) {

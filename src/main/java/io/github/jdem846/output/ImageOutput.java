@@ -38,6 +38,8 @@ public final class ImageOutput {
      * @param file    the target; {@code .png}, {@code .tif} or {@code .tiff}
      * @param argb    non-premultiplied ARGB pixels, row-major, {@code width × height}; no-data pixels have alpha 0
      *                ({@link WriteOptions#noData()} is not used: alpha is the mask)
+     * @param width   pixels across
+     * @param height  pixels down
      * @param geo     where the image lies on the ground, or {@code null}
      * @param options how to write
      * @return the files written and notices for the user
@@ -54,8 +56,16 @@ public final class ImageOutput {
      * Writes an 8-bit single-band image (a hillshade, a shadow mask): PNG colour type 0 or a gray GeoTIFF, whose
      * GDAL_NODATA tag is {@link WriteOptions#noData()} when given (an integer 0..255; hillshades use 0).
      *
-     * @param gray samples 0..255 as unsigned bytes, row-major, {@code width × height}
-     * @see #writeRgba for the other parameters
+     * @param file    the target; {@code .png}, {@code .tif} or {@code .tiff}
+     * @param gray    samples 0..255 as unsigned bytes, row-major, {@code width × height}
+     * @param width   pixels across
+     * @param height  pixels down
+     * @param geo     where the image lies on the ground, or {@code null}
+     * @param options how to write
+     * @return the files written and notices for the user
+     * @throws IllegalArgumentException for an unsupported extension, a size that does not match or a no-data value
+     *                                  outside 0..255
+     * @throws IOException              naming the file when it cannot be written
      */
     public static WriteResult writeGray(Path file, byte[] gray, int width, int height, GeoReference geo,
                                         WriteOptions options) throws IOException {
@@ -71,9 +81,15 @@ public final class ImageOutput {
      * Writes a float32 single-band GeoTIFF (numeric products such as a shadow depth or a sky-view factor), with
      * GDAL_NODATA = {@link WriteOptions#noData()} when given (NaN allowed).
      *
-     * @param values samples, row-major, {@code width × height}
-     * @throws IllegalArgumentException also when {@code file} is not a {@code .tif}/{@code .tiff}
-     * @see #writeRgba for the other parameters
+     * @param file    the target, {@code .tif} or {@code .tiff}
+     * @param values  samples, row-major, {@code width × height}
+     * @param width   pixels across
+     * @param height  pixels down
+     * @param geo     where the image lies on the ground, or {@code null}
+     * @param options how to write
+     * @return the files written and notices for the user
+     * @throws IllegalArgumentException for another extension or an array that does not match the size
+     * @throws IOException              naming the file when it cannot be written
      */
     public static WriteResult writeFloat(Path file, float[] values, int width, int height, GeoReference geo,
                                          WriteOptions options) throws IOException {
@@ -88,7 +104,10 @@ public final class ImageOutput {
     /**
      * A {@code TYPE_INT_ARGB} image backed by {@code argb} (no copy: changes to one show in the other).
      *
-     * @param argb non-premultiplied ARGB pixels, row-major, {@code width × height}
+     * @param argb   non-premultiplied ARGB pixels, row-major, {@code width × height}
+     * @param width  pixels across
+     * @param height pixels down
+     * @return the image
      */
     public static BufferedImage toBufferedImage(int[] argb, int width, int height) {
         return Rasters.argbImage(Objects.requireNonNull(argb, "argb"), width, height);
@@ -98,25 +117,44 @@ public final class ImageOutput {
      * A {@code TYPE_BYTE_GRAY} image backed by {@code gray} (no copy). Its raster samples are the bytes; note that
      * Java treats this type as linear gray, so {@code getRGB} returns gamma-converted colours, not (v, v, v).
      *
-     * @param gray samples 0..255 as unsigned bytes, row-major, {@code width × height}
+     * @param gray   samples 0..255 as unsigned bytes, row-major, {@code width × height}
+     * @param width  pixels across
+     * @param height pixels down
+     * @return the image
      */
     public static BufferedImage toBufferedImage(byte[] gray, int width, int height) {
         return Rasters.grayImage(Objects.requireNonNull(gray, "gray"), width, height);
     }
 
-    /** The world-file path for {@code image}: {@code out.pgw}, {@code out.tfw} or {@code out.wld}. */
+    /**
+     * The world-file path for an image.
+     *
+     * @param image  the image file
+     * @param naming the format's own extension or the generic one
+     * @return {@code out.pgw}, {@code out.tfw} or {@code out.wld}
+     */
     public static Path worldFilePath(Path image, WriteOptions.WorldFileNaming naming) {
         String ext = naming == WriteOptions.WorldFileNaming.WLD ? "wld" : ImageFormat.of(image).worldFileExtension();
         return sibling(image, ext);
     }
 
-    /** The {@code .prj} path for {@code image}: {@code out.prj}. */
+    /**
+     * The {@code .prj} path for an image.
+     *
+     * @param image the image file
+     * @return {@code out.prj}
+     */
     public static Path prjPath(Path image) {
         ImageFormat.of(image);
         return sibling(image, "prj");
     }
 
-    /** The GDAL sidecar path for {@code image}: {@code out.png.aux.xml}. */
+    /**
+     * The GDAL sidecar path for an image.
+     *
+     * @param image the image file
+     * @return {@code out.png.aux.xml}
+     */
     public static Path auxXmlPath(Path image) {
         ImageFormat.of(image);
         return image.resolveSibling(image.getFileName() + ".aux.xml");
@@ -128,6 +166,9 @@ public final class ImageOutput {
      * image has no georeferencing or no known CRS). {@link InputProtection} checks them against the input's files
      * before any work.
      *
+     * @param file    the image file
+     * @param options how it will be written
+     * @return the image, then the sidecars that the write may touch
      * @throws IllegalArgumentException for an unsupported extension
      */
     public static List<Path> filesWritten(Path file, WriteOptions options) {

@@ -15,7 +15,7 @@ sealed interface Pixels {
     /** Bits per sample: 8, or 32 for float. */
     int bitsPerSample();
 
-    /** Bytes of one row as stored in a little-endian TIFF: samples interleaved (R, G, B, A for RGBA). */
+    /** @return bytes of one row as stored in a little-endian TIFF: samples interleaved (R, G, B, A for RGBA) */
     default int rowBytes() {
         return width() * samplesPerPixel() * bitsPerSample() / 8;
     }

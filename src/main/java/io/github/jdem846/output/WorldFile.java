@@ -14,7 +14,7 @@ import java.math.BigDecimal;
  * @param c x of the centre of the upper-left pixel
  * @param f y of the centre of the upper-left pixel
  */
-public record WorldFile(double a, double d, double b, double e, double c, double f) {
+record WorldFile(double a, double d, double b, double e, double c, double f) {
 
     /**
      * The world file of a north-up image of {@code width × height} pixels covering {@code geo}: A = extent x /

@@ -23,6 +23,9 @@ public final class Dem {
      * Wraps {@code values} (not copied). Cells equal (as float32) to {@code declaredNoData} are replaced by NaN in
      * place; pass NaN when the data declares no no-data value (NaN cells are always no-data).
      *
+     * @param values         elevations, row-major, row 0 = north
+     * @param geometry       the grid's size, place and CRS
+     * @param declaredNoData the no-data value of the source, or NaN
      * @throws IllegalArgumentException if the array length is not width × height
      */
     public Dem(float[] values, GridGeometry geometry, double declaredNoData) {
@@ -47,6 +50,11 @@ public final class Dem {
      * Wraps {@code values} (not copied) whose no-data cells are already NaN, keeping {@code declaredNoData} for
      * reporting only: cells equal to it are <em>not</em> replaced. For readers that apply the no-data rule
      * before averaging, where a block mean may legitimately equal the declared value.
+     *
+     * @param values         elevations, row-major, NaN = no-data
+     * @param geometry       the grid's size, place and CRS
+     * @param declaredNoData the no-data value of the source, or NaN
+     * @return the DEM
      */
     public static Dem ofNormalized(float[] values, GridGeometry geometry, double declaredNoData) {
         return new Dem(values, geometry, declaredNoData, true);
@@ -56,6 +64,12 @@ public final class Dem {
      * {@link #ofNormalized(float[], GridGeometry, double)} for a reader that took the statistics of {@code values}
      * on its way (min, max and valid count of exactly these cells, as {@link ElevationStatistics#of} would give
      * them), so that {@link #statistics()} needs no pass of its own.
+     *
+     * @param values         elevations, row-major, NaN = no-data
+     * @param geometry       the grid's size, place and CRS
+     * @param declaredNoData the no-data value of the source, or NaN
+     * @param statistics     the statistics of {@code values}
+     * @return the DEM
      */
     public static Dem ofNormalized(float[] values, GridGeometry geometry, double declaredNoData,
                                    ElevationStatistics statistics) {
@@ -68,34 +82,54 @@ public final class Dem {
         return d;
     }
 
-    /** A DEM with no declared no-data value (NaN cells are still no-data). */
+    /**
+     * A DEM with no declared no-data value (NaN cells are still no-data).
+     *
+     * @param values   elevations, row-major, row 0 = north
+     * @param geometry the grid's size, place and CRS
+     */
     public Dem(float[] values, GridGeometry geometry) {
         this(values, geometry, Double.NaN);
     }
 
+    /** @return columns */
     public int width() {
         return geometry.width();
     }
 
+    /** @return rows */
     public int height() {
         return geometry.height();
     }
 
+    /** @return the grid's size, place and CRS */
     public GridGeometry geometry() {
         return geometry;
     }
 
-    /** The no-data value the source declared, or NaN when it declared none (or declared NaN). */
+    /** @return the no-data value the source declared, or NaN when it declared none (or declared NaN) */
     public double declaredNoData() {
         return declaredNoData;
     }
 
-    /** Elevation of cell ({@code col}, {@code row}); NaN for no-data. No bounds check beyond the array's. */
+    /**
+     * Elevation of one cell. No bounds check beyond the array's.
+     *
+     * @param col column, 0 = west
+     * @param row row, 0 = north
+     * @return the elevation; NaN for no-data
+     */
     public float get(int col, int row) {
         return values[row * geometry.width() + col];
     }
 
-    /** True when the cell holds an elevation. */
+    /**
+     * Whether a cell holds an elevation.
+     *
+     * @param col column, 0 = west
+     * @param row row, 0 = north
+     * @return true unless the cell is no-data
+     */
     public boolean isValid(int col, int row) {
         return !Float.isNaN(get(col, row));
     }
@@ -103,12 +137,14 @@ public final class Dem {
     /**
      * The backing array, row-major, NaN = no-data. For fast read-only access by stages; callers must not modify
      * it.
+     *
+     * @return the cells
      */
     public float[] backingArray() {
         return values;
     }
 
-    /** Min, max and count of valid cells (computed once). */
+    /** @return min, max and count of valid cells (computed once) */
     public ElevationStatistics statistics() {
         ElevationStatistics s = statistics;
         if (s == null) {
@@ -121,6 +157,9 @@ public final class Dem {
     /**
      * The same elevations (shared, not copied) on another geometry of the same size, e.g. with another ellipsoid;
      * this DEM when {@code g} is the same object.
+     *
+     * @param g the geometry, of this DEM's size
+     * @return the DEM on {@code g}
      */
     public Dem withGeometry(GridGeometry g) {
         if (g == geometry) {
@@ -135,7 +174,15 @@ public final class Dem {
         return d;
     }
 
-    /** Cells {@code [col, col+w) × [row, row+h)} as a new DEM with the matching geometry. */
+    /**
+     * Cells {@code [col, col+w) × [row, row+h)} as a new DEM with the matching geometry.
+     *
+     * @param col first column
+     * @param row first row
+     * @param w   columns
+     * @param h   rows
+     * @return the copy
+     */
     public Dem crop(int col, int row, int w, int h) {
         if (col < 0 || row < 0 || w < 1 || h < 1 || col + w > width() || row + h > height()) {
             throw new IllegalArgumentException("window " + w + "×" + h + " at (" + col + ", " + row

@@ -10,7 +10,12 @@ package io.github.jdem846.raster;
  */
 public record ElevationStatistics(double min, double max, long validCount, long totalCount) {
 
-    /** Scans {@code values}, skipping NaN. */
+    /**
+     * Scans cells, skipping NaN.
+     *
+     * @param values the cells
+     * @return their statistics
+     */
     public static ElevationStatistics of(float[] values) {
         float min = Float.POSITIVE_INFINITY;
         float max = Float.NEGATIVE_INFINITY;
@@ -29,13 +34,26 @@ public record ElevationStatistics(double min, double max, long validCount, long 
         return ofRange(min, max, valid, values.length);
     }
 
-    /** The statistics of {@code valid} cells between {@code min} and {@code max} (ignored when none is valid). */
+    /**
+     * Statistics already taken.
+     *
+     * @param min   lowest valid elevation (ignored when none is valid)
+     * @param max   highest valid elevation (ignored when none is valid)
+     * @param valid number of cells that hold an elevation
+     * @param total number of cells
+     * @return the statistics, with NaN bounds when no cell is valid
+     */
     public static ElevationStatistics ofRange(double min, double max, long valid, long total) {
         return valid == 0 ? new ElevationStatistics(Double.NaN, Double.NaN, 0, total)
                 : new ElevationStatistics(min, max, valid, total);
     }
 
-    /** The statistics of the cells of this and {@code other} together. */
+    /**
+     * The statistics of two sets of cells together.
+     *
+     * @param other the statistics of the other cells
+     * @return the statistics of both
+     */
     public ElevationStatistics merge(ElevationStatistics other) {
         if (other.isEmpty()) {
             return new ElevationStatistics(min, max, validCount, totalCount + other.totalCount);
@@ -47,12 +65,12 @@ public record ElevationStatistics(double min, double max, long validCount, long 
                 validCount + other.validCount, totalCount + other.totalCount);
     }
 
-    /** Number of no-data cells. */
+    /** @return the number of no-data cells */
     public long noDataCount() {
         return totalCount - validCount;
     }
 
-    /** True when no cell holds an elevation. */
+    /** @return true when no cell holds an elevation */
     public boolean isEmpty() {
         return validCount == 0;
     }

@@ -93,7 +93,7 @@ public final class GridGeometry {
     public record Placement(int col, int row, int rootWidth, int rootHeight) {
     }
 
-    /** Where this grid lies in the grid it was cut from (see {@link Placement}). */
+    /** @return where this grid lies in the grid it was cut from (see {@link Placement}) */
     public Placement placement() {
         return placement;
     }
@@ -113,22 +113,22 @@ public final class GridGeometry {
         return height;
     }
 
-    /** World x of the west edge of the grid. */
+    /** @return world x of the west edge of the grid */
     public double originX() {
         return originX;
     }
 
-    /** World y of the north edge of the grid. */
+    /** @return world y of the north edge of the grid */
     public double originY() {
         return originY;
     }
 
-    /** Cell width in CRS units. */
+    /** @return cell width in CRS units */
     public double cellWidth() {
         return cellWidth;
     }
 
-    /** Cell height in CRS units (positive). */
+    /** @return cell height in CRS units (positive) */
     public double cellHeight() {
         return cellHeight;
     }
@@ -151,17 +151,17 @@ public final class GridGeometry {
         return originY - (row + 0.5) * cellHeight;
     }
 
-    /** World x of the east edge. */
+    /** @return world x of the east edge */
     public double eastX() {
         return originX + width * cellWidth;
     }
 
-    /** World y of the south edge. */
+    /** @return world y of the south edge */
     public double southY() {
         return originY - height * cellHeight;
     }
 
-    /** True when cell sizes in metres are known (projected with a known unit, or geographic). */
+    /** @return true when cell sizes in metres are known (projected with a known unit, or geographic) */
     public boolean hasMetricUnits() {
         return crs.kind() != CrsInfo.Kind.UNKNOWN;
     }
@@ -187,7 +187,7 @@ public final class GridGeometry {
         };
     }
 
-    /** The ellipsoid used for metric sizes (the CRS's, or WGS 84). */
+    /** @return the ellipsoid used for metric sizes (the CRS's, or WGS 84) */
     public Ellipsoid ellipsoid() {
         return crs.ellipsoidOrWgs84();
     }
@@ -243,7 +243,7 @@ public final class GridGeometry {
         }
     }
 
-    /** The latitude/longitude box of the grid's outer edges, when the CRS allows. */
+    /** @return the latitude/longitude box of the grid's outer edges, when the CRS allows */
     public Optional<LatLonBox> latLonExtent() {
         return geoLocator().map(l -> l.extent(originX, southY(), eastX(), originY));
     }

@@ -25,7 +25,7 @@ public final class GridRequestException extends IllegalArgumentException {
         this.part = java.util.Objects.requireNonNull(part, "part");
     }
 
-    /** The part of the request at fault. */
+    /** @return the part of the request at fault */
     public Part part() {
         return part;
     }

@@ -1,7 +1,7 @@
 package io.github.jdem846.render;
 
-import io.github.jdem846.shade.Brightness;
-import io.github.jdem846.shade.Clamp;
+import io.github.jdem846.internal.Brightness;
+import io.github.jdem846.internal.Clamp;
 import io.github.jdem846.shade.HillshadeOptions;
 
 /**
@@ -10,7 +10,7 @@ import io.github.jdem846.shade.HillshadeOptions;
  * fade), clamped to [−1, 1], then the jDem846 tone (relative light/dark intensity, sign-preserving spot exponent,
  * {@link HillshadeOptions#tone}), then eq. 8 on each channel ({@link Brightness#adjustBrightness(int, double)}).
  */
-public final class Compositor {
+final class Compositor {
 
     /** The original's {@code shadowIntensity} default. */
     public static final double DEFAULT_SHADOW_INTENSITY = 0.4;

@@ -41,17 +41,32 @@ public record OutputSize(int width, int height, double scale) {
         }
     }
 
-    /** A target width; the height follows the aspect ratio. */
+    /**
+     * A target width; the height follows the aspect ratio.
+     *
+     * @param width pixels across, 1 to {@link #MAX_SIDE}
+     * @return the size
+     */
     public static OutputSize width(int width) {
         return new OutputSize(requireSide(width, "width", false), 0, 0);
     }
 
-    /** A target height; the width follows the aspect ratio. */
+    /**
+     * A target height; the width follows the aspect ratio.
+     *
+     * @param height pixels down, 1 to {@link #MAX_SIDE}
+     * @return the size
+     */
     public static OutputSize height(int height) {
         return new OutputSize(0, requireSide(height, "height", false), 0);
     }
 
-    /** A scale factor: pixels per DEM cell. */
+    /**
+     * A scale factor.
+     *
+     * @param scale pixels per DEM cell, above 0
+     * @return the size
+     */
     public static OutputSize scale(double scale) {
         return new OutputSize(0, 0, requireScale(scale));
     }
@@ -62,6 +77,9 @@ public record OutputSize(int width, int height, double scale) {
      *
      * @throws GridRequestException when the size asked for gives more than {@link #MAX_SIDE} pixels on a side or
      *                              {@link #MAX_PIXELS} in all, or a scale leaves less than one pixel on a side
+     * @param cols the grid's columns
+     * @param rows the grid's rows
+     * @return {width, height} in pixels
      */
     public int[] pixelsFor(int cols, int rows) {
         double sx;

@@ -40,7 +40,7 @@ public record RenderSettings(int parallelism, int tileSize) {
         }
     }
 
-    /** All available processors (at most {@link #MAX_PARALLELISM}) and the default tile size. */
+    /** @return all available processors (at most {@link #MAX_PARALLELISM}) and the default tile size */
     public static RenderSettings defaults() {
         return new RenderSettings(Math.min(MAX_PARALLELISM, Runtime.getRuntime().availableProcessors()),
                 DEFAULT_TILE_SIZE);

@@ -46,6 +46,8 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
     /**
      * The original's defaults: the article's hypsometric tint (table 2), jDem846 hillshade with light multiple 0.75
      * and intensities 0.75/1.0, no cast shadows, sun at azimuth 320° and elevation 25°, shadow intensity 0.4.
+     *
+     * @return the default scene
      */
     public static Scene defaults() {
         return new Scene(ColorRamp.defaultRamp(), HillshadeMethod.JDEM846, HillshadeOptions.DEFAULTS,
@@ -53,53 +55,103 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
                 Compositor.DEFAULT_SHADOW_INTENSITY, 0, null);
     }
 
-    /** The same scene with another tint ({@code null} = plain gray). */
+    /**
+     * The same scene with another tint.
+     *
+     * @param ramp the tint ramp, or {@code null} for plain gray
+     * @return the new scene
+     */
     public Scene withTint(ColorRamp ramp) {
         return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange);
     }
 
-    /** The same scene with another hillshade method ({@code null} = none). */
+    /**
+     * The same scene with another hillshade method.
+     *
+     * @param method the method, or {@code null} for none
+     * @return the new scene
+     */
     public Scene withHillshade(HillshadeMethod method) {
         return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange);
     }
 
-    /** The same scene with other hillshade options. */
+    /**
+     * The same scene with other hillshade options.
+     *
+     * @param options z-factor, intensities and spot exponent
+     * @return the new scene
+     */
     public Scene withHillshadeOptions(HillshadeOptions options) {
         return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange);
     }
 
-    /** The same scene with another cast-shadow algorithm ({@code null} or NONE = none). */
+    /**
+     * The same scene with another cast-shadow algorithm.
+     *
+     * @param algorithm the algorithm, or {@code null} or NONE for none
+     * @return the new scene
+     */
     public Scene withShadows(ShadowAlgorithm algorithm) {
         return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange);
     }
 
-    /** The same scene with other cast-shadow options. */
+    /**
+     * The same scene with other cast-shadow options.
+     *
+     * @param options the cast-shadow settings
+     * @return the new scene
+     */
     public Scene withShadowOptions(ShadowOptions options) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange);
     }
 
-    /** The same scene under one light direction. */
+    /**
+     * The same scene under one light direction.
+     *
+     * @param direction where the light comes from
+     * @return the new scene
+     */
     public Scene withLight(LightDirection direction) {
         return withLight(LightField.uniform(direction));
     }
 
-    /** The same scene under a light that may vary over the grid. */
+    /**
+     * The same scene under a light that may vary over the grid.
+     *
+     * @param field the light, uniform or varying over the grid
+     * @return the new scene
+     */
     public Scene withLight(LightField field) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange);
     }
 
-    /** The same scene with another shadow intensity. */
+    /**
+     * The same scene with another shadow intensity.
+     *
+     * @param intensity how dark a cast shadow is, 0 to 1
+     * @return the new scene
+     */
     public Scene withShadowIntensity(double intensity) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange);
     }
 
-    /** The same scene with a global darkening (twilight fade). */
+    /**
+     * The same scene with a global darkening (twilight fade).
+     *
+     * @param darkening the global darkening, 0 to 2
+     * @return the new scene
+     */
     public Scene withFade(double darkening) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity,
                 darkening, tintRange);
     }
 
-    /** The same scene with a fixed range for percent tints ({@code null} = the rendered DEM's own range). */
+    /**
+     * The same scene with a fixed range for percent tints.
+     *
+     * @param range the range, or {@code null} for the rendered DEM's own range
+     * @return the new scene
+     */
     public Scene withTintRange(ElevationStatistics range) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
                 range);
@@ -108,12 +160,14 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
     /**
      * The light the cast shadows are traced with: the central light, for terrain exaggerated by the z-factor (the
      * shadows of the terrain the hillshade shows; {@link LightDirection#forHeightsScaledBy(double)}).
+     *
+     * @return the light for the shadow stage
      */
     public LightDirection shadowLight() {
         return light.central().forHeightsScaledBy(hillshadeOptions.zFactor());
     }
 
-    /** True when cast shadows are to be computed. */
+    /** @return true when cast shadows are to be computed */
     public boolean hasShadows() {
         return shadows != null && shadows != ShadowAlgorithm.NONE;
     }

@@ -1,6 +1,7 @@
 package io.github.jdem846.shade;
 
-import java.util.Locale;
+import io.github.jdem846.internal.Brightness;
+import io.github.jdem846.internal.Clamp;
 import java.util.Objects;
 
 /**
@@ -90,22 +91,6 @@ public enum HillshadeMethod {
             out[i] = (byte) gray(illumination[i], options);
         }
         return out;
-    }
-
-    /** The command-line name: {@code jdem846}, {@code horn}, {@code multidirectional}. */
-    public String cliName() {
-        return name().toLowerCase(Locale.ROOT);
-    }
-
-    /** The method named {@code name} (case-insensitive), with a message listing the choices otherwise. */
-    public static HillshadeMethod fromName(String name) {
-        for (HillshadeMethod m : values()) {
-            if (m.cliName().equalsIgnoreCase(name == null ? "" : name.trim())) {
-                return m;
-            }
-        }
-        throw new IllegalArgumentException("unknown hillshade method '" + name
-                + "'; choose jdem846 (default), horn or multidirectional");
     }
 
     /** GDAL's float → byte store: the value as float32, clamped to 0 … 255, rounded to nearest (ties to even). */

@@ -1,5 +1,7 @@
 package io.github.jdem846.shade;
 
+import io.github.jdem846.internal.Brightness;
+
 /**
  * The knobs of the hillshade methods, immutable, with the original jDem846's defaults ({@link #DEFAULTS}).
  *
@@ -93,12 +95,12 @@ public record HillshadeOptions(double zFactor, double lightMultiple, double rela
                 spotExponent, scale);
     }
 
-    /** The same options with metric cell sizes from the DEM's geometry (no scale override). */
+    /** @return the same options with metric cell sizes from the DEM's geometry (no scale override) */
     public HillshadeOptions withMetricCellSize() {
         return withHorizontalScale(Double.NaN);
     }
 
-    /** True when the cell sizes come from a {@link #horizontalScale()} override rather than the geometry. */
+    /** @return true when the cell sizes come from a {@link #horizontalScale()} override rather than the geometry */
     public boolean hasHorizontalScale() {
         return !Double.isNaN(horizontalScale);
     }

@@ -1,5 +1,6 @@
 package io.github.jdem846.shade;
 
+import io.github.jdem846.internal.Clamp;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import java.util.Objects;
@@ -21,7 +22,7 @@ import java.util.Objects;
  * Deviation: gdaldem approximates 1/√ with an SSE estimate plus one Newton step (relative error ≈ 1e−7); this uses
  * an exact square root.
  */
-public final class HornIllumination implements IlluminationStage {
+final class HornIllumination implements IlluminationStage {
 
     private final HillshadeOptions options;
 

@@ -1,5 +1,6 @@
 package io.github.jdem846.shade;
 
+import io.github.jdem846.internal.Clamp;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import java.util.Objects;
@@ -34,7 +35,7 @@ import java.util.Objects;
  * result is min(cosine, 0): nothing is lit, flat ground gets sin(elevation) ≤ 0 and slopes facing away from the
  * light darken as usual.
  */
-public final class JDem846Illumination implements IlluminationStage {
+final class JDem846Illumination implements IlluminationStage {
 
     private final HillshadeOptions options;
 

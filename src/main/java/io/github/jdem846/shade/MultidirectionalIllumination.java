@@ -1,5 +1,6 @@
 package io.github.jdem846.shade;
 
+import io.github.jdem846.internal.Clamp;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import java.util.Objects;
@@ -19,7 +20,7 @@ import java.util.Objects;
  * byte is 1 + 254·result ({@link HillshadeMethod#gray}). Computed multiplied through by Δx·Δy like
  * {@link HornIllumination}; same window and edge rules ({@link GdalWindow}).
  */
-public final class MultidirectionalIllumination implements IlluminationStage {
+final class MultidirectionalIllumination implements IlluminationStage {
 
     private static final double COS_225 = Math.cos(Math.toRadians(225));
 

@@ -10,7 +10,7 @@ import java.util.function.BiFunction;
  * (0, 0) is the centre of the north-west cell and (−0.5, −0.5) its outer corner.
  */
 @FunctionalInterface
-public interface LatLonLocator {
+interface LatLonLocator {
 
     /** {@code {latitude, longitude}} in degrees of the point at ({@code col}, {@code row}). */
     double[] latLon(double col, double row);

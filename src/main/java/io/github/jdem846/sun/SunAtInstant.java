@@ -49,7 +49,7 @@ public final class SunAtInstant {
         return new SunAtInstant(time, observer);
     }
 
-    /** The instant, in the zone it was given in. */
+    /** @return the instant, in the zone it was given in */
     public ZonedDateTime time() {
         return time;
     }
@@ -58,7 +58,7 @@ public final class SunAtInstant {
         return observer;
     }
 
-    /** ΔT used, in seconds (given or estimated). */
+    /** @return ΔT used, in seconds (given or estimated) */
     public double deltaTSeconds() {
         return deltaTSeconds;
     }

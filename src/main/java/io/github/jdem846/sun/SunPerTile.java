@@ -197,7 +197,7 @@ public final class SunPerTile {
         }
     }
 
-    /** The largest minus the smallest elevation over all tiles, in degrees. */
+    /** @return the largest minus the smallest elevation over all tiles, in degrees */
     public double elevationSpreadDegrees() {
         double min = Double.POSITIVE_INFINITY;
         double max = Double.NEGATIVE_INFINITY;
@@ -208,7 +208,7 @@ public final class SunPerTile {
         return max - min;
     }
 
-    /** The narrowest arc of azimuths that holds every tile's sun, in degrees (360 minus the widest gap). */
+    /** @return the narrowest arc of azimuths that holds every tile's sun, in degrees (360 minus the widest gap) */
     public double azimuthSpreadDegrees() {
         double[] az = Arrays.stream(suns).mapToDouble(SunPosition::azimuthDegrees).sorted().toArray();
         double widestGap = az[0] + 360 - az[az.length - 1];

@@ -25,7 +25,7 @@ public sealed interface ColorRamp permits StopRamp, SeaLandRamp {
     /** The name of the default ramp, {@code hypsometric} (the article's table 2). */
     String DEFAULT_NAME = "hypsometric";
 
-    /** A short name for messages (the built-in name, or the colour file's name). */
+    /** @return a short name for messages (the built-in name, or the colour file's name) */
     String name();
 
     /**
@@ -38,10 +38,17 @@ public sealed interface ColorRamp permits StopRamp, SeaLandRamp {
      *
      * @throws IllegalArgumentException if the ramp has percent stops and the range is not finite (a DEM holding
      *                                  ±∞, usually an undeclared no-data value)
+     * @param range the DEM's valid elevations
+     * @return the tint of each elevation
      */
     TintFunction bind(ElevationStatistics range);
 
-    /** {@code bind(dem.statistics())}. */
+    /**
+     * {@code bind(dem.statistics())}.
+     *
+     * @param dem the DEM to colour
+     * @return the tint of each elevation
+     */
     default TintFunction bind(Dem dem) {
         return bind(dem.statistics());
     }
@@ -50,18 +57,20 @@ public sealed interface ColorRamp permits StopRamp, SeaLandRamp {
      * A built-in ramp by name, case-insensitive ({@code _} and spaces count as {@code -}); the original jDem846
      * identifiers ({@code hypsometric-tint}, {@code standard-coloring}, …) are accepted as aliases.
      *
+     * @param name a built-in name, e.g. {@code hypsometric} or {@code etopo1}
+     * @return the ramp
      * @throws IllegalArgumentException for an unknown name; the message lists the known names
      */
     static ColorRamp named(String name) {
         return BuiltInRamps.named(name);
     }
 
-    /** The names of the built-in ramps, default first. */
+    /** @return the names of the built-in ramps, default first */
     static List<String> names() {
         return BuiltInRamps.names();
     }
 
-    /** The default ramp, {@code hypsometric}. */
+    /** @return the default ramp, {@code hypsometric} */
     static ColorRamp defaultRamp() {
         return named(DEFAULT_NAME);
     }
@@ -72,7 +81,9 @@ public sealed interface ColorRamp permits StopRamp, SeaLandRamp {
      * {@code /} start comment lines; fields are separated by spaces, tabs, commas or colons. GMT {@code .cpt}
      * files with {@code # COLOR_MODEL = RGB} are read as gdaldem reads them. See docs/tint.md.
      *
+     * @param file      the colour file
      * @param selection how colours between stops are chosen (gdaldem's default is {@link ColorSelection#INTERPOLATE})
+     * @return the ramp the file describes
      * @throws ColorFileException naming the file, the line and what is wrong, for a file gdaldem would reject or
      *                            misread
      * @throws IOException        if the file cannot be read

@@ -1,5 +1,6 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.testing.TestJvm;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -232,7 +233,7 @@ class UsageErrorTest {
     void aPictureTooLargeForTheHeapIsRefusedBeforeItIsMade() throws IOException, InterruptedException {
         Path png = dir.resolve("large.png");
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Process p = new ProcessBuilder(List.of(java, "-Xmx64m", "-cp", System.getProperty("java.class.path"),
+        Process p = new ProcessBuilder(List.of(java, "-Xmx64m", "-cp", TestJvm.classPath(),
                 Main.class.getName(), "render", BT, "-q", "--width", "6000", "-o", png.toString()))
                 .redirectErrorStream(true).start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();

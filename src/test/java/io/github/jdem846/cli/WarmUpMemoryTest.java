@@ -1,14 +1,15 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.testing.TestJvm;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.jdem846.io.DemFormatException;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.ReadRequest;
 import io.github.jdem846.io.Window;
-import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.testing.SingleStripTiff;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -33,7 +34,7 @@ class WarmUpMemoryTest {
         Path tif = SingleStripTiff.write(tmp.resolve("strip.tif"), 6000);   // 72 MB decoded, a 48 MB heap
         Path png = tmp.resolve("hs.png");
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Process p = new ProcessBuilder(List.of(java, "-Xmx48m", "-cp", System.getProperty("java.class.path"),
+        Process p = new ProcessBuilder(List.of(java, "-Xmx48m", "-cp", TestJvm.classPath(),
                 Main.class.getName(), "hillshade", tif.toString(), "-q", "-o", png.toString()))
                 .redirectErrorStream(true).start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();

@@ -3,6 +3,8 @@ package io.github.jdem846.io;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.jdem846.io.source.BlockReader;
+import io.github.jdem846.io.source.RasterSource;
 import io.github.jdem846.raster.Dem;
 import java.io.IOException;
 import java.nio.file.Path;

@@ -7,13 +7,13 @@ import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
 
 /** Exact value and geometry comparisons for reader tests. */
-final class DemAssertions {
+public final class DemAssertions {
 
     private DemAssertions() {
     }
 
     /** Same size and the same float32 bits in every cell (NaN = NaN), naming the first differing cell. */
-    static void assertSameValues(Dem expected, Dem actual, String what) {
+    public static void assertSameValues(Dem expected, Dem actual, String what) {
         assertEquals(expected.width(), actual.width(), what + ": width");
         assertEquals(expected.height(), actual.height(), what + ": height");
         float[] e = expected.backingArray();

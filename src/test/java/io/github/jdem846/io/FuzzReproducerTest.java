@@ -3,7 +3,7 @@ package io.github.jdem846.io;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
-import io.github.jdem846.raster.DemFormatException;
+import io.github.jdem846.io.esri.SidecarCrs;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

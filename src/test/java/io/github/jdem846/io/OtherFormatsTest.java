@@ -8,8 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.io.source.ValueScale;
 import io.github.jdem846.raster.Dem;
-import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.raster.PixelAnchor;
 import io.github.jdem846.testing.TestDems;

@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.jdem846.io.source.RasterSource;
 import io.github.jdem846.raster.Dem;
-import io.github.jdem846.raster.DemFormatException;
 import io.github.jdem846.testing.SingleStripTiff;
 import java.io.IOException;
 import java.nio.file.Path;

@@ -1,6 +1,6 @@
 package io.github.jdem846.output;
 
-import io.github.jdem846.geo.GeoKeys;
+import io.github.jdem846.internal.GeoKeys;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

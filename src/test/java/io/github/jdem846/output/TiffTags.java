@@ -1,10 +1,10 @@
 package io.github.jdem846.output;
 
-import io.github.jdem846.geo.GeoKeys;
 import com.twelvemonkeys.imageio.metadata.Directory;
 import com.twelvemonkeys.imageio.metadata.Entry;
 import com.twelvemonkeys.imageio.metadata.tiff.TIFFReader;
 import com.twelvemonkeys.imageio.plugins.tiff.TIFFImageReaderSpi;
+import io.github.jdem846.internal.GeoKeys;
 import java.awt.image.BufferedImage;
 import java.awt.image.Raster;
 import java.io.IOException;

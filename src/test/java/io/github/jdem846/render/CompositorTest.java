@@ -2,7 +2,7 @@ package io.github.jdem846.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import io.github.jdem846.shade.Brightness;
+import io.github.jdem846.internal.Brightness;
 import io.github.jdem846.shade.HillshadeOptions;
 import org.junit.jupiter.api.Test;
 

@@ -72,17 +72,4 @@ class OutputSizeTest {
         assertEquals(GridRequestException.Part.WINDOW, world.part());
         assertTrue(world.getMessage().contains("east 1000.0, north 500.0"), world.getMessage());
     }
-
-    @Test
-    void aPictureTooLargeForTheHeapIsRefusedWithWhatItNeeds() {
-        // grid 4 bytes per cell + ARGB picture 4 bytes per pixel: 40000 × 21487 needs 6.4 GiB
-        InsufficientHeapException e = assertThrows(InsufficientHeapException.class,
-                () -> InsufficientHeapException.requireFits(40_000L * 21_487, 40_000, 21_487, 4, 5L << 30));
-        assertTrue(e.getMessage().contains("40000×21487") && e.getMessage().contains("6.4 GiB")
-                && e.getMessage().contains("at most 5.0 GiB"), e.getMessage());
-        // exactly the heap fits; the grid with a halo larger than the picture counts its own cells
-        InsufficientHeapException.requireFits(1000 * 1000, 1000, 1000, 4, 8_000_000);
-        assertThrows(InsufficientHeapException.class,
-                () -> InsufficientHeapException.requireFits(1000 * 1001, 1000, 1000, 4, 8_000_000));
-    }
 }

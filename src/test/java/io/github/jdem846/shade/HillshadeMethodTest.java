@@ -62,16 +62,6 @@ class HillshadeMethodTest {
     }
 
     @Test
-    void namesRoundTripAndUnknownNamesSayWhatIsAllowed() {
-        for (HillshadeMethod m : HillshadeMethod.values()) {
-            assertEquals(m, HillshadeMethod.fromName(m.cliName().toUpperCase()));
-        }
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> HillshadeMethod.fromName("zevenbergen"));
-        assertTrue(e.getMessage().contains("jdem846") && e.getMessage().contains("horn"), e.getMessage());
-    }
-
-    @Test
     void optionsRejectNonsenseWithAMessage() {
         assertEquals(1.0, D.zFactor());
         assertEquals(0.75, D.lightMultiple());

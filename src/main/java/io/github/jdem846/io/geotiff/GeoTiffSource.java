@@ -1,0 +1,711 @@
+package io.github.jdem846.io.geotiff;
+
+import com.twelvemonkeys.imageio.plugins.tiff.TIFFImageReaderSpi;
+import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.internal.GeoKeys;
+import io.github.jdem846.io.DemFormat;
+import io.github.jdem846.io.DemFormatException;
+import io.github.jdem846.io.DemInfo;
+import io.github.jdem846.io.SampleType;
+import io.github.jdem846.io.esri.EsriGridLayout;
+import io.github.jdem846.io.esri.SidecarCrs;
+import io.github.jdem846.io.source.MemoryGuard;
+import io.github.jdem846.io.source.RasterSource;
+import io.github.jdem846.io.source.ReaderGeometry;
+import io.github.jdem846.io.source.ValueScale;
+import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.raster.PixelAnchor;
+import java.awt.Rectangle;
+import java.awt.image.DataBuffer;
+import java.awt.image.Raster;
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.channels.FileChannel;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import javax.imageio.ImageReadParam;
+import javax.imageio.ImageReader;
+import javax.imageio.metadata.IIOMetadata;
+import javax.imageio.stream.FileImageInputStream;
+import javax.imageio.stream.ImageInputStream;
+
+/**
+ * GeoTIFF: pixels decoded by TwelveMonkeys imageio-tiff (its reader SPI is instantiated directly, not looked up in
+ * the global ImageIO registry), georeferencing from ModelPixelScale + ModelTiepoint or ModelTransformation, CRS from
+ * the GeoKeys ({@link GeoTiffCrs}), no-data from GDAL_NODATA. Rotated or sheared grids are refused.
+ *
+ * <p>Windows: TwelveMonkeys 3.15.0 decodes every strip and tile above the last row of a source region (and fails on
+ * regions narrower than a tiled image, haraldk/TwelveMonkeys#746). So for the usual compressions (none, LZW,
+ * Deflate, PackBits) each read hands TwelveMonkeys a synthetic image directory that lists only the strips or tiles
+ * covering the rows and columns asked for ({@link TiffSubset}); only those are decoded. Other compressions (JPEG)
+ * are read through full-width source regions in large bands.
+ */
+public final class GeoTiffSource implements RasterSource {
+
+    private final Path file;
+    private final ImageInputStream stream;
+    private final ImageReader reader;
+    private final DemInfo info;
+    private final int rowBlock;
+    private final boolean tiled;
+    private final TiffSubset.Layout layout; // null: no subsetting, use source regions
+    private final FileChannel channel;
+    private final ValueScale valueScale;
+    private final long blockBytes;
+
+    private GeoTiffSource(Path file, ImageInputStream stream, ImageReader reader, DemInfo info, int rowBlock,
+                          boolean tiled, TiffSubset.Layout layout, FileChannel channel, ValueScale valueScale,
+                          long blockBytes) {
+        this.file = file;
+        this.stream = stream;
+        this.reader = reader;
+        this.info = info;
+        this.rowBlock = rowBlock;
+        this.tiled = tiled;
+        this.layout = layout;
+        this.channel = channel;
+        this.valueScale = valueScale;
+        this.blockBytes = blockBytes;
+    }
+
+    public static RasterSource open(Path tif) throws IOException {
+        ImageInputStream stream = new FileImageInputStream(tif.toFile());
+        ImageReader reader = null;
+        try {
+            reader = new TIFFImageReaderSpi().createReaderInstance();
+            reader.setInput(stream, true, false);
+            if (reader.getNumImages(true) < 1) {
+                throw new DemFormatException(tif, "the TIFF holds no image (its first image directory is missing;"
+                        + " truncated or corrupt?)");
+            }
+            int width = reader.getWidth(0);
+            int height = reader.getHeight(0);
+            IIOMetadata metadata = reader.getImageMetadata(0);
+            TiffFields fields = TiffFields.of(metadata);
+            List<String> notices = new ArrayList<>();
+            SampleType type = sampleType(tif, fields);
+            int bands = fields.intValue(TiffFields.SAMPLES_PER_PIXEL, 1);
+            if (bands > 1) {
+                notices.add("the file has " + bands + " bands; band 1 is read");
+            }
+            checkCompression(tif, fields);
+            TiffBlocks blocks = TiffBlocks.of(tif, fields, width, height, Files.size(tif));
+            GridGeometry geometry = geometry(tif, fields, width, height, notices);
+            Double noData = noData(fields, notices);
+            ValueScale valueScale = ValueScale.fromGdalMetadata(fields.ascii(TiffFields.GDAL_METADATA), notices);
+            boolean tiled = blocks.tiled();
+            int rowBlock = blocks.blockHeight();
+            DemInfo info = new DemInfo(tif.toString(), DemFormat.GEOTIFF, type, bands, geometry, noData, notices);
+            FileChannel channel = FileChannel.open(tif, StandardOpenOption.READ);
+            TiffSubset.Layout layout = layoutOf(fields, blocks, width, height, byteOrder(channel));
+            return new GeoTiffSource(tif, stream, reader, info, rowBlock, tiled, layout, channel, valueScale,
+                    blockBytes(fields, blocks, width));
+        } catch (DemFormatException e) {
+            closeQuietly(reader, stream);
+            throw e;
+        } catch (IOException | RuntimeException e) {
+            closeQuietly(reader, stream);
+            throw new DemFormatException(tif, "not a readable TIFF (truncated or corrupt?): " + describeDirectory(e),
+                    e);
+        }
+    }
+
+    /** TIFF compression codes TwelveMonkeys decodes for DEMs, with their names. */
+    private static final java.util.Map<Integer, String> DECODED_COMPRESSIONS = java.util.Map.of(
+            1, "none", 5, "LZW", 8, "Deflate", 32946, "Deflate", 32773, "PackBits", 6, "old-style JPEG",
+            7, "JPEG");
+
+    /** Refuses compressions we cannot decode before any pixel is read, naming the compression and a remedy. */
+    private static void checkCompression(Path tif, TiffFields fields) throws DemFormatException {
+        int code = fields.intValue(TiffFields.COMPRESSION, 1);
+        if (DECODED_COMPRESSIONS.containsKey(code)) {
+            return;
+        }
+        String name = switch (code) {
+            case 50000 -> "ZSTD";
+            case 34925 -> "LZMA";
+            case 50001 -> "WebP";
+            case 34887 -> "LERC";
+            default -> "code " + code;
+        };
+        boolean floating = fields.has(TiffFields.SAMPLE_FORMAT) && fields.longs(TiffFields.SAMPLE_FORMAT)[0] == 3;
+        throw new DemFormatException(tif, name + " compression (TIFF tag 259 = " + code + ") is not supported; "
+                + "supported: none, LZW, Deflate, PackBits, JPEG. Re-encode it, e.g. gdal_translate -co "
+                + "COMPRESS=DEFLATE -co PREDICTOR=" + (floating ? 3 : 2) + " in.tif out.tif");
+    }
+
+    @Override
+    public DemInfo info() {
+        return info;
+    }
+
+    /** One strip or tile, all its samples, twice: as stored (at most as large, uncompressed) and decoded. */
+    @Override
+    public long blockBytes() {
+        return blockBytes;
+    }
+
+    private static long blockBytes(TiffFields fields, TiffBlocks blocks, int width) {
+        long across = blocks.tiled() ? blocks.blockWidth() : width;
+        long bitsPerPixel = 0;
+        long[] bits = fields.has(TiffFields.BITS_PER_SAMPLE) ? fields.longs(TiffFields.BITS_PER_SAMPLE)
+                : new long[] {1};
+        for (long b : bits) {
+            bitsPerPixel += Math.max(0, Math.min(b, 64));
+        }
+        if (bits.length == 1) {
+            bitsPerPixel *= Math.max(1, Math.min(fields.intValue(TiffFields.SAMPLES_PER_PIXEL, 1), 1 << 16));
+        }
+        return MemoryGuard.saturatedMultiply(2 * across * blocks.blockHeight(), (bitsPerPixel + 7) / 8);
+    }
+
+    @Override
+    public ValueScale valueScale() {
+        return valueScale;
+    }
+
+    @Override
+    public int naturalRowBlock() {
+        return rowBlock;
+    }
+
+    /**
+     * About 4 M cells per read with subsetting. Without it, large bands: TwelveMonkeys decodes every strip or
+     * tile from the top of the image on each read, so each call costs time in proportion to the rows above it; up
+     * to 32 M cells per call (less on small heaps: 1/64 of the maximum heap, at least 4 M cells).
+     */
+    @Override
+    public long bandCells() {
+        if (layout != null) {
+            return 1L << 22;
+        }
+        return Math.max(1L << 22, Math.min(1L << 25, Runtime.getRuntime().maxMemory() / 64));
+    }
+
+    /** With subsetting each read decodes only its own strips or tiles. */
+    @Override
+    public boolean readsRowsIndependently() {
+        return layout != null;
+    }
+
+    @Override
+    public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
+        if (layout != null) {
+            try {
+                readSubset(col, row, width, rows, dst);
+            } catch (IndexOutOfBoundsException | NegativeArraySizeException | IllegalArgumentException
+                     | ArithmeticException | java.nio.BufferUnderflowException e) {
+                // what the checks at open did not foresee in a corrupt file: still the file's own error
+                throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                        + " (truncated or corrupt TIFF?): " + describe(e), e);
+            }
+            return;
+        }
+        ImageReadParam param = reader.getDefaultReadParam();
+        // TwelveMonkeys 3.15.0 fails on tiled images when the source region is narrower than the image
+        // (haraldk/TwelveMonkeys#746), so tiled files are read in full-width row bands and cropped here.
+        int readCol = tiled ? 0 : col;
+        int readWidth = tiled ? info.width() : width;
+        param.setSourceRegion(new Rectangle(readCol, row, readWidth, rows));
+        Raster raster;
+        try {
+            raster = reader.readRaster(0, param);
+        } catch (IOException | RuntimeException e) {
+            throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                    + " (truncated or corrupt TIFF?): " + describe(e), e);
+        }
+        if (raster.getWidth() < readWidth || raster.getHeight() < rows) {
+            throw new DemFormatException(file, "the TIFF decoder returned " + raster.getWidth() + "×"
+                    + raster.getHeight() + " cells for a " + readWidth + "×" + rows + " region");
+        }
+        copyBand0(raster, col - readCol, 0, width, rows, dst);
+    }
+
+    /**
+     * Decodes only the strips or tiles covering the cells, through a synthetic directory. Where some of them are
+     * sparse (never written), block by block: sparse ones read as the declared no-data, or 0 without one, as GDAL
+     * reads them.
+     */
+    private void readSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
+        if (!layout.coversSparse(col, row, width, rows)) {
+            decodeSubset(col, row, width, rows, dst);
+            return;
+        }
+        float fill = info.declaredNoData() != null ? info.declaredNoData().floatValue() : 0f;
+        int bw = layout.blockWidth();
+        int bh = layout.blockHeight();
+        for (int by = row / bh * bh; by < row + rows; by += bh) {
+            int y0 = Math.max(by, row);
+            int h = Math.min(by + bh, row + rows) - y0;
+            for (int bx = col / bw * bw; bx < col + width; bx += bw) {
+                int x0 = Math.max(bx, col);
+                int w = Math.min(bx + bw, col + width) - x0;
+                float[] part = new float[w * h];
+                if (layout.isSparse(by / bh * layout.blocksAcross() + bx / bw)) {
+                    java.util.Arrays.fill(part, fill);
+                } else {
+                    decodeSubset(x0, y0, w, h, part);
+                }
+                for (int r = 0; r < h; r++) {
+                    System.arraycopy(part, r * w, dst, (y0 - row + r) * width + (x0 - col), w);
+                }
+            }
+        }
+    }
+
+    /** Decodes the strips or tiles covering the cells, none of them sparse, through a synthetic directory. */
+    private void decodeSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
+        if (layout.decodedHere() && decodeHere(col, row, width, rows, dst)) {
+            return;
+        }
+        if (layout.predictorUndoneHere()) {
+            decodeUndoingPredictor(col, row, width, rows, dst);
+            return;
+        }
+        TiffSubset.Subset subset = TiffSubset.of(layout, col, row, width, rows);
+        Raster raster;
+        DecodeTarget target;
+        ImageReader r = new TIFFImageReaderSpi().createReaderInstance();
+        try (ImageInputStream in = new SplicedImageInputStream(subset.head(), subset.shift(), channel)) {
+            r.setInput(in, true, true);
+            target = DecodeTarget.forRawType(r.getRawImageType(0), subset.width(), subset.height());
+            ImageReadParam param = r.getDefaultReadParam();
+            param.setDestination(target); // null: the decoder's own image
+            raster = r.readRaster(0, param);
+        } catch (IOException | RuntimeException e) {
+            throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                    + " (truncated or corrupt TIFF?): " + describe(e), e);
+        } finally {
+            r.dispose();
+        }
+        if (raster.getWidth() < subset.width() || raster.getHeight() < subset.height()) {
+            throw new DemFormatException(file, "the TIFF decoder returned " + raster.getWidth() + "×"
+                    + raster.getHeight() + " cells for " + subset.width() + "×" + subset.height());
+        }
+        if (target != null && raster == target.getRaster()) {
+            copyCells(target.array(), raster.getDataBuffer().getDataType(), subset.width(), col - subset.x0(),
+                    row - subset.y0(), width, rows, dst);
+        } else {
+            copyBand0(raster, col - subset.x0(), row - subset.y0(), width, rows, dst);
+        }
+    }
+
+    /**
+     * Like {@link #decodeSubset} for uncompressed and LZW blocks: read here with one positional read each, LZW
+     * decompressed by {@link TiffLzw}, turned into samples by {@link PredictorUndo}. TwelveMonkeys reads
+     * uncompressed samples through stream calls and LZW bytes one synchronized call at a time
+     * (docs/performance.md).
+     *
+     * @return false, with nothing decided, when a block is in the old, bit-reversed LZW (left to TwelveMonkeys)
+     */
+    private boolean decodeHere(int col, int row, int width, int rows, float[] dst) throws IOException {
+        boolean lzw = layout.compression() == 5;
+        int bw = layout.blockWidth();
+        int bh = layout.blockHeight();
+        int bytes = layout.bytesPerSample();
+        int segment = layout.tiled() ? bw : layout.width();
+        for (int by = row / bh * bh; by < row + rows; by += bh) {
+            int blockRows = layout.tiled() ? bh : Math.min(bh, layout.height() - by);
+            long blockBytes = (long) segment * blockRows * bytes;
+            if (blockBytes > MemoryGuard.MAX_ARRAY) {
+                throw new DemFormatException(file, "its " + (layout.tiled() ? "tiles" : "strips") + " hold "
+                        + MemoryGuard.human(blockBytes) + " each, more than one Java array can hold; re-tile it,"
+                        + " e.g. gdal_translate -co TILED=YES in.tif out.tif");
+            }
+            int expected = (int) blockBytes;
+            byte[] block = lzw ? new byte[expected] : null; // LZW's output; uncompressed data stay as read
+            for (int bx = col / bw * bw; bx < col + width; bx += bw) {
+                int index = by / bh * layout.blocksAcross() + bx / bw;
+                byte[] stored = readBlock(layout.offsets()[index], layout.byteCounts()[index]);
+                if (lzw && !TiffLzw.isNewStyle(stored, stored.length)) {
+                    return false;
+                }
+                int got;
+                if (lzw) {
+                    try {
+                        got = TiffLzw.decode(stored, stored.length, block);
+                    } catch (IOException e) {
+                        throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                                + " (truncated or corrupt TIFF?): " + e.getMessage(), e);
+                    }
+                } else {
+                    got = Math.min(stored.length, expected);
+                }
+                byte[] samples = lzw ? block : stored;
+                if (got < expected) {
+                    throw new DemFormatException(file, "the data of " + (layout.tiled() ? "tile " : "strip ")
+                            + index + " end after " + got + " of " + expected + " bytes (truncated or corrupt"
+                            + " TIFF?)");
+                }
+                int x0 = Math.max(bx, col);
+                int x1 = Math.min(Math.min(bx + bw, layout.width()), col + width);
+                for (int y = Math.max(by, row); y < Math.min(by + blockRows, row + rows); y++) {
+                    PredictorUndo.row(samples, (y - by) * segment * bytes, segment, layout.predictor(),
+                            info.dataType(), layout.order(), x0 - bx, x1 - x0, dst, (y - row) * width + x0 - col);
+                }
+            }
+        }
+        return true;
+    }
+
+    /** The stored bytes of one strip or tile. */
+    private byte[] readBlock(long offset, long count) throws IOException {
+        if (count > Integer.MAX_VALUE - 8) {
+            throw new DemFormatException(file, "a strip or tile of " + count + " bytes is too large to read");
+        }
+        if (offset < 0 || count < 0) { // refused at open (TiffBlocks); kept off FileChannel.read all the same
+            throw new DemFormatException(file, "a strip or tile at offset " + offset + " of " + count
+                    + " bytes lies outside the file");
+        }
+        byte[] b = new byte[(int) count];
+        ByteBuffer buffer = ByteBuffer.wrap(b);
+        long at = offset;
+        while (buffer.hasRemaining()) {
+            int n = channel.read(buffer, at);
+            if (n < 0) {
+                throw new DemFormatException(file, "the file ends inside a strip or tile (truncated?)");
+            }
+            at += n;
+        }
+        return b;
+    }
+
+    /**
+     * Like {@link #decodeSubset}, with TwelveMonkeys only decompressing the blocks ({@link TiffSubset#ofBytes})
+     * and the predictor undone here, row by row of each block ({@link PredictorUndo}).
+     */
+    private void decodeUndoingPredictor(int col, int row, int width, int rows, float[] dst) throws IOException {
+        TiffSubset.Subset subset = TiffSubset.ofBytes(layout, col, row, width, rows);
+        int bytes = layout.bytesPerSample();
+        int rowBytes = subset.width() * bytes;
+        byte[] raw;
+        ImageReader r = new TIFFImageReaderSpi().createReaderInstance();
+        try (ImageInputStream in = new SplicedImageInputStream(subset.head(), subset.shift(), channel)) {
+            r.setInput(in, true, true);
+            DecodeTarget target = DecodeTarget.forRawType(r.getRawImageType(0), rowBytes, subset.height());
+            if (target == null || !(target.array() instanceof byte[] array)) {
+                throw new IOException("the decoder gave no byte raster for the decompressed blocks");
+            }
+            ImageReadParam param = r.getDefaultReadParam();
+            param.setDestination(target);
+            Raster raster = r.readRaster(0, param);
+            if (raster != target.getRaster() || raster.getWidth() < rowBytes
+                    || raster.getHeight() < subset.height()) {
+                throw new IOException("the decoder did not fill the " + rowBytes + "×" + subset.height()
+                        + " byte raster of the decompressed blocks");
+            }
+            raw = array;
+        } catch (IOException | RuntimeException e) {
+            throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
+                    + " (truncated or corrupt TIFF?): " + describe(e), e);
+        } finally {
+            r.dispose();
+        }
+        // the predictor runs along each row of each block: a tile's width, or a strip's (the image's)
+        int segment = layout.tiled() ? layout.blockWidth() : layout.width();
+        int first = col - subset.x0();
+        int end = first + width;
+        for (int y = 0; y < rows; y++) {
+            int base = (row - subset.y0() + y) * rowBytes;
+            for (int s0 = first / segment * segment; s0 < end; s0 += segment) {
+                int from = Math.max(first, s0);
+                int to = Math.min(end, s0 + segment);
+                PredictorUndo.row(raw, base + s0 * bytes, segment, layout.predictor(), info.dataType(),
+                        layout.order(), from - s0, to - from, dst, y * width + from - first);
+            }
+        }
+    }
+
+    /**
+     * The layout for {@link TiffSubset}, or null when the compression needs more than the strip or tile bytes
+     * (JPEG tables) and subsetting is not attempted.
+     */
+    private static TiffSubset.Layout layoutOf(TiffFields f, TiffBlocks b, int width, int height, ByteOrder order) {
+        int compression = f.intValue(TiffFields.COMPRESSION, 1);
+        if (compression != 1 && compression != 5 && compression != 8 && compression != 32946
+                && compression != 32773) {
+            return null;
+        }
+        int spp = f.intValue(TiffFields.SAMPLES_PER_PIXEL, 1);
+        long[] bits = f.has(TiffFields.BITS_PER_SAMPLE) ? f.longs(TiffFields.BITS_PER_SAMPLE) : new long[] {1};
+        long[] formats = f.has(TiffFields.SAMPLE_FORMAT) ? f.longs(TiffFields.SAMPLE_FORMAT) : new long[] {1};
+        int planar = f.intValue(TiffFields.PLANAR_CONFIGURATION, 1);
+        if (spp > 1 && planar != 2 && (bits.length < spp || formats.length < spp)) {
+            return null; // a per-sample array is short: leave the file to the decoder's own rules
+        }
+        int blockWidth = b.blockWidth();
+        int rowBlock = b.blockHeight();
+        long[] offsets = b.offsets();
+        long[] counts = b.byteCounts();
+        long blocks = ((width + (long) blockWidth - 1) / blockWidth) * ((height + (long) rowBlock - 1) / rowBlock);
+        if (offsets.length < blocks || counts.length < blocks) {
+            return null; // no byte counts: left to the decoder
+        }
+        return new TiffSubset.Layout(order, width, height, bits, compression,
+                f.intValue(TiffFields.PHOTOMETRIC, 1), spp, planar, f.intValue(TiffFields.PREDICTOR, 1), formats,
+                f.has(TiffFields.EXTRA_SAMPLES) ? f.longs(TiffFields.EXTRA_SAMPLES) : new long[0], b.tiled(),
+                blockWidth, rowBlock, offsets, counts);
+    }
+
+    /** The byte order of the TIFF header ("II" little-endian, "MM" big-endian). */
+    private static ByteOrder byteOrder(FileChannel channel) throws IOException {
+        ByteBuffer b = ByteBuffer.allocate(2);
+        channel.read(b, 0);
+        return b.get(0) == 'M' ? ByteOrder.BIG_ENDIAN : ByteOrder.LITTLE_ENDIAN;
+    }
+
+    /**
+     * Columns {@code [skipX, skipX+width)} of rows {@code [skipY, skipY+rows)} of band 0 of the raster as float32,
+     * undoing Java's lack of signed bytes and unsigned ints.
+     */
+    private void copyBand0(Raster raster, int skipX, int skipY, int width, int rows, float[] dst) {
+        int x0 = raster.getMinX() + skipX;
+        int y0 = raster.getMinY() + skipY;
+        SampleType type = info.dataType();
+        int dataType = raster.getDataBuffer().getDataType();
+        if (dataType == DataBuffer.TYPE_INT || dataType == DataBuffer.TYPE_BYTE) {
+            int[] row = new int[width];
+            for (int r = 0; r < rows; r++) {
+                raster.getSamples(x0, y0 + r, width, 1, 0, row);
+                for (int c = 0; c < width; c++) {
+                    int v = row[c];
+                    dst[r * width + c] = switch (type) {
+                        case INT8 -> (byte) v;
+                        case UINT32 -> v & 0xFFFFFFFFL;
+                        default -> v;
+                    };
+                }
+            }
+        } else {
+            float[] row = new float[width];
+            for (int r = 0; r < rows; r++) {
+                raster.getSamples(x0, y0 + r, width, 1, 0, row);
+                System.arraycopy(row, 0, dst, r * width, width);
+            }
+        }
+    }
+
+    /**
+     * Like {@link #copyBand0}, from the cells of a {@link DecodeTarget} ({@code stride} per row, of a DataBuffer
+     * type) with the same conversions as the JDK's sample getters there: bytes and unsigned shorts unsigned,
+     * shorts signed, then the sample type's reinterpretation of ints and bytes.
+     */
+    private void copyCells(Object cells, int dataType, int stride, int skipX, int skipY, int width, int rows,
+                           float[] dst) {
+        SampleType type = info.dataType();
+        for (int r = 0; r < rows; r++) {
+            int from = (skipY + r) * stride + skipX;
+            int to = r * width;
+            if (cells instanceof float[] a) {
+                System.arraycopy(a, from, dst, to, width);
+            } else if (cells instanceof short[] a) {
+                boolean unsigned = dataType == DataBuffer.TYPE_USHORT;
+                for (int c = 0; c < width; c++) {
+                    dst[to + c] = unsigned ? a[from + c] & 0xFFFF : a[from + c];
+                }
+            } else if (cells instanceof int[] a) {
+                boolean unsigned = type == SampleType.UINT32;
+                for (int c = 0; c < width; c++) {
+                    dst[to + c] = unsigned ? a[from + c] & 0xFFFFFFFFL : a[from + c];
+                }
+            } else if (cells instanceof byte[] a) {
+                boolean signed = type == SampleType.INT8;
+                for (int c = 0; c < width; c++) {
+                    dst[to + c] = signed ? a[from + c] : a[from + c] & 0xFF;
+                }
+            } else {
+                double[] a = (double[]) cells;
+                for (int c = 0; c < width; c++) {
+                    dst[to + c] = (float) a[from + c];
+                }
+            }
+        }
+    }
+
+    @Override
+    public void close() throws IOException {
+        reader.dispose();
+        try {
+            stream.close();
+        } finally {
+            channel.close();
+        }
+    }
+
+    /** The sample type from BitsPerSample and SampleFormat, refusing what a DEM reader cannot decode. */
+    private static SampleType sampleType(Path tif, TiffFields fields) throws DemFormatException {
+        long[] bits = fields.has(TiffFields.BITS_PER_SAMPLE) ? fields.longs(TiffFields.BITS_PER_SAMPLE)
+                : new long[] {1};
+        long[] formats = fields.has(TiffFields.SAMPLE_FORMAT) ? fields.longs(TiffFields.SAMPLE_FORMAT)
+                : new long[] {1};
+        int b = (int) bits[0];
+        int f = (int) formats[0];
+        SampleType t = switch (f) {
+            case 1 -> b == 8 ? SampleType.UINT8 : b == 16 ? SampleType.UINT16 : b == 32 ? SampleType.UINT32 : null;
+            case 2 -> b == 8 ? SampleType.INT8 : b == 16 ? SampleType.INT16 : b == 32 ? SampleType.INT32 : null;
+            case 3 -> b == 32 ? SampleType.FLOAT32 : b == 64 ? SampleType.FLOAT64 : null;
+            default -> null;
+        };
+        if (t == null) {
+            String kind = switch (f) {
+                case 1 -> "unsigned integer";
+                case 2 -> "signed integer";
+                case 3 -> "floating point";
+                case 4 -> "undefined";
+                case 5 -> "complex integer";
+                case 6 -> "complex floating point";
+                default -> "SampleFormat " + f;
+            };
+            throw new DemFormatException(tif, "unsupported sample format: " + b + "-bit " + kind + " (SampleFormat "
+                    + f + "); elevations must be 8/16/32-bit signed or unsigned integers or 32/64-bit floats");
+        }
+        return t;
+    }
+
+    /** Grid geometry from ModelTransformation or ModelTiepoint + ModelPixelScale, and the GeoKeys. */
+    private static GridGeometry geometry(Path tif, TiffFields fields, int width, int height, List<String> notices)
+            throws DemFormatException {
+        GeoKeyReader keys = GeoKeyReader.empty();
+        if (fields.has(TiffFields.GEO_KEY_DIRECTORY)) {
+            try {
+                keys = GeoKeyReader.parse(fields.longs(TiffFields.GEO_KEY_DIRECTORY),
+                        fields.has(TiffFields.GEO_DOUBLE_PARAMS) ? fields.doubles(TiffFields.GEO_DOUBLE_PARAMS) : null,
+                        fields.ascii(TiffFields.GEO_ASCII_PARAMS));
+            } catch (IllegalArgumentException e) {
+                notices.add("GeoKeys ignored: " + e.getMessage());
+            }
+        }
+        double originX;
+        double originY;
+        double cellW;
+        double cellH;
+        boolean georeferenced = true;
+        String source; // named in messages
+        if (fields.has(TiffFields.MODEL_TRANSFORMATION)) {
+            source = "ModelTransformation (TIFF tag " + TiffFields.MODEL_TRANSFORMATION + ")";
+            double[] m = fields.doubles(TiffFields.MODEL_TRANSFORMATION);
+            if (m.length < 8) {
+                throw new DemFormatException(tif, "ModelTransformationTag has " + m.length + " values, not 16");
+            }
+            if (m[1] != 0 || m[4] != 0) {
+                throw new DemFormatException(tif, "the grid is rotated or sheared (ModelTransformation row/column"
+                        + " terms " + m[1] + ", " + m[4] + "); only north-up grids are read: warp it first, e.g."
+                        + " gdalwarp");
+            }
+            if (!(m[0] > 0) || !(m[5] < 0)) {
+                throw new DemFormatException(tif, "the grid is flipped (ModelTransformation scales " + m[0] + ", "
+                        + m[5] + "); only north-up grids with columns going east are read");
+            }
+            cellW = m[0];
+            cellH = -m[5];
+            originX = m[3];
+            originY = m[7];
+        } else if (fields.has(TiffFields.MODEL_TIEPOINT) && fields.has(TiffFields.MODEL_PIXEL_SCALE)) {
+            source = "ModelTiepoint and ModelPixelScale (TIFF tags " + TiffFields.MODEL_TIEPOINT + ", "
+                    + TiffFields.MODEL_PIXEL_SCALE + ")";
+            double[] t = fields.doubles(TiffFields.MODEL_TIEPOINT);
+            double[] s = fields.doubles(TiffFields.MODEL_PIXEL_SCALE);
+            if (t.length < 6 || s.length < 2) {
+                throw new DemFormatException(tif, "ModelTiepoint/ModelPixelScale have too few values ("
+                        + t.length + ", " + s.length + ")");
+            }
+            if (t.length > 6) {
+                notices.add("the file has " + t.length / 6 + " tie points; the first is used with the pixel scale");
+            }
+            if (!(s[0] > 0) || !(s[1] > 0)) {
+                throw new DemFormatException(tif, "ModelPixelScale is " + s[0] + ", " + s[1]
+                        + "; both must be positive (north-up grid)");
+            }
+            cellW = s[0];
+            cellH = s[1];
+            originX = t[3] - t[0] * cellW;
+            originY = t[4] + t[1] * cellH;
+        } else {
+            if (fields.has(TiffFields.MODEL_TIEPOINT)) {
+                throw new DemFormatException(tif, "the file is georeferenced by tie points (ground control points)"
+                        + " without a pixel scale; warp it first, e.g. gdalwarp");
+            }
+            notices.add("no georeferencing (no ModelPixelScale/ModelTiepoint/ModelTransformation): cells are"
+                    + " 1 × 1 unit with the origin at the north-west corner of row 0");
+            georeferenced = false;
+            source = "the image size (no georeferencing)";
+            cellW = 1;
+            cellH = 1;
+            originX = 0;
+            originY = height;
+        }
+        PixelAnchor anchor = PixelAnchor.CORNER;
+        if (keys.code(GeoKeys.GT_RASTER_TYPE).orElse(1) == 2) {
+            // PixelIsPoint: the tie point names the centre of the cell; move to its outer corner.
+            anchor = PixelAnchor.CENTER;
+            originX -= cellW / 2;
+            originY += cellH / 2;
+        }
+        // each value can be sane and the grid still not: 1e308 × rows overflows, 1e-300 cells at 500000 collapse
+        ReaderGeometry.check(tif, source, width, height, originX, originY, cellW, cellH);
+        CrsInfo crs;
+        if (!keys.isEmpty()) {
+            crs = GeoTiffCrs.resolve(keys, notices);
+        } else if (georeferenced) {
+            crs = SidecarCrs.assumeFromExtent(new EsriGridLayout(width, height, originX, originY, cellW, cellH,
+                    anchor), "no GeoKeys", notices);
+        } else {
+            crs = CrsInfo.UNKNOWN;
+        }
+        return ReaderGeometry.of(tif, source, width, height, originX, originY, cellW, cellH, crs, anchor);
+    }
+
+    /** GDAL_NODATA: a number or "nan"; null when absent. */
+    private static Double noData(TiffFields fields, List<String> notices) {
+        String text = fields.ascii(TiffFields.GDAL_NODATA);
+        if (text == null) {
+            return null;
+        }
+        String t = text.strip().toLowerCase(Locale.ROOT);
+        if (t.isEmpty()) {
+            return null;
+        }
+        if (t.equals("nan") || t.equals("-nan")) {
+            return Double.NaN;
+        }
+        try {
+            return Double.parseDouble(t);
+        } catch (NumberFormatException e) {
+            notices.add("GDAL_NODATA '" + text.strip() + "' is not a number and was ignored");
+            return null;
+        }
+    }
+
+    /** The decoder's own message, or the kind of failure when it has none. */
+    private static String describe(Throwable e) {
+        String m = e.getMessage();
+        if (m != null && !m.isBlank()) {
+            return m;
+        }
+        return e instanceof java.io.EOFException ? "the file ends inside the data of a strip or tile"
+                : "the decoder failed (" + e.getClass().getSimpleName() + ")";
+    }
+
+    /** {@link #describe}, for failures while the image directory is read. */
+    private static String describeDirectory(Throwable e) {
+        // TwelveMonkeys stores the EOFException of a field whose values lie outside the file as its value
+        return e instanceof ClassCastException ? "a field of the image directory has values of the wrong type or"
+                + " outside the file" : describe(e);
+    }
+
+    private static void closeQuietly(ImageReader reader, ImageInputStream stream) {
+        if (reader != null) {
+            reader.dispose();
+        }
+        try {
+            stream.close();
+        } catch (IOException ignored) {
+            // already failing
+        }
+    }
+}

@@ -1,0 +1,234 @@
+package io.github.jdem846.job;
+
+import io.github.jdem846.geo.Ellipsoid;
+import io.github.jdem846.io.DemInfo;
+import io.github.jdem846.io.DemReader;
+import io.github.jdem846.io.LoadedDem;
+import io.github.jdem846.io.ReadRequest;
+import io.github.jdem846.io.Window;
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.DemResampler;
+import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.render.OutputSize;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Objects;
+
+/**
+ * Reads exactly the part of a DEM file a picture needs: the window (or the whole grid) plus a halo of cells that
+ * the stages read around it, at the output resolution. Shrinking reads a decimated grid (box average, only the
+ * blocks needed are decoded) and finishes with an area-weighted resample to the exact size, so no stage ever runs
+ * at full resolution for a smaller picture.
+ */
+final class DemLoader {
+
+    /** The elevation statistics of a whole file, streamed on the first call and kept for the others. */
+    @FunctionalInterface
+    public interface FileStatistics {
+        /** Min, max and valid count of the whole file at full resolution. */
+        ElevationStatistics get() throws IOException;
+    }
+
+    /** Cells of halo a stage needs around the output window, in DEM cells. */
+    @FunctionalInterface
+    public interface Halo {
+        /**
+         * The halo in source cells on each side: {west, north, east, south}.
+         *
+         * @param statistics the whole file's elevation statistics, streamed only if asked for (once per load)
+         * @param info       the file's header
+         * @param window     the cells of the output window
+         */
+        int[] cells(FileStatistics statistics, DemInfo info, Window.Cells window) throws IOException;
+
+        /** No halo. */
+        Halo NONE = (statistics, info, window) -> new int[4];
+
+        /** The same number of cells on every side. */
+        static Halo uniform(int cells) {
+            return (statistics, info, window) -> new int[] {cells, cells, cells, cells};
+        }
+
+        /**
+         * The halo a windowed render with cast shadows must read toward the sun ({@link
+         * io.github.jdem846.shadow.ShadowHalo}); the file's maximum is streamed once, only when a window is given.
+         */
+        static Halo shadows(io.github.jdem846.light.LightDirection light,
+                            io.github.jdem846.shadow.ShadowOptions options) {
+            return ShadowHaloSource.of(light, options);
+        }
+
+        /** The larger of this halo and {@code other} on each side. */
+        default Halo union(Halo other) {
+            return (statistics, info, window) -> {
+                int[] a = cells(statistics, info, window);
+                int[] b = other.cells(statistics, info, window);
+                return new int[] {Math.max(a[0], b[0]), Math.max(a[1], b[1]), Math.max(a[2], b[2]),
+                    Math.max(a[3], b[3])};
+            };
+        }
+    }
+
+    /**
+     * The loaded grid with its halo, and where the output window sits inside it.
+     *
+     * @param info    the file's header
+     * @param dem     the grid at output resolution, halo included
+     * @param col     first column of the output window within {@code dem}
+     * @param row     first row of the output window within {@code dem}
+     * @param width   output width in pixels
+     * @param height  output height in pixels
+     * @param fileStatistics elevation range of the whole file at full resolution (so that percent tints of a
+     *                       window or a reduced picture match the full picture), or {@code null} when not asked for
+     */
+    public record Loaded(DemInfo info, Dem dem, int col, int row, int width, int height,
+                         ElevationStatistics fileStatistics) {
+
+        /** @return the output window's cells within {@code dem} */
+        public io.github.jdem846.shadow.CellWindow area() {
+            return new io.github.jdem846.shadow.CellWindow(col, row, width, height);
+        }
+
+        /** @return true when the grid holds nothing but the output window */
+        public boolean hasNoHalo() {
+            return col == 0 && row == 0 && width == dem.width() && height == dem.height();
+        }
+
+        /** @return the output window of the grid itself */
+        public Dem windowDem() {
+            return hasNoHalo() ? dem : dem.crop(col, row, width, height);
+        }
+    }
+
+    private DemLoader() {
+    }
+
+    /**
+     * Loads {@code file} for a picture of {@code window} (null = the whole grid) at {@code size}, with {@code halo}.
+     *
+     * @param fileStatistics also give the whole file's elevation range (taken during the read when it covers the
+     *                       whole file, decimated or not; otherwise streamed in a pass of its own, without holding
+     *                       the grid)
+     */
+    public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics)
+            throws IOException {
+        return load(file, window, size, halo, fileStatistics, Ellipsoid.WGS84);
+    }
+
+    /**
+     * As {@link #load(Path, Window, OutputSize, Halo, boolean)}, on {@code body} when the file names no ellipsoid
+     * ({@link io.github.jdem846.raster.GridGeometry#withDefaultEllipsoid(Ellipsoid)}): metric cell sizes of a
+     * geographic grid, halos and the curvature radius then follow the body.
+     */
+    public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics,
+                              Ellipsoid body) throws IOException {
+        return load(file, window, size, halo, fileStatistics, body, 0);
+    }
+
+    /**
+     * As {@link #load(Path, Window, OutputSize, Halo, boolean, Ellipsoid)}, for a caller that will also hold
+     * {@code bytesPerPixel} per output pixel (e.g. 4 for an ARGB picture). Once the header is read, and before any
+     * cell is, the load is refused when the grid at output resolution and that picture cannot fit in the Java heap
+     * even when it is empty.
+     *
+     * @throws io.github.jdem846.raster.GridRequestException when the window or the size do not fit the grid
+     * @throws InsufficientHeapException                      when the grid and the picture exceed the heap's maximum
+     */
+    public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics,
+                              Ellipsoid body, int bytesPerPixel) throws IOException {
+        Objects.requireNonNull(size, "size");
+        Objects.requireNonNull(halo, "halo");
+        Objects.requireNonNull(body, "body");
+        DemInfo info = DemReader.inspect(file).withDefaultEllipsoid(body);
+        Window.Cells win = window == null ? Window.cells(0, 0, info.width(), info.height())
+                : window.resolve(info.geometry());
+        int[] px = size.pixelsFor(win.width(), win.height());
+        long maxHeap = Runtime.getRuntime().maxMemory();
+        InsufficientHeapException.requireFits((long) px[0] * px[1], px[0], px[1], bytesPerPixel, maxHeap);
+        double fx = (double) win.width() / px[0];
+        double fy = (double) win.height() / px[1];
+        StreamedStatistics streamed = new StreamedStatistics(file);
+        int[] h = halo.cells(streamed, info, win);
+        // Halo in source cells, rounded up to whole output pixels so the window keeps pixel-aligned edges.
+        int west = haloCells(h[0], fx, win.col());
+        int north = haloCells(h[1], fy, win.row());
+        int east = haloCells(h[2], fx, info.width() - win.col() - win.width());
+        int south = haloCells(h[3], fy, info.height() - win.row() - win.height());
+        Window.Cells read = Window.cells(win.col() - west, win.row() - north, win.width() + west + east,
+                win.height() + north + south);
+        // (saturated at the int range: DemResampler refuses a grid larger than one Java array)
+        int outW = (int) Math.min(Integer.MAX_VALUE, Math.max(1, Math.round(read.width() / fx)));
+        int outH = (int) Math.min(Integer.MAX_VALUE, Math.max(1, Math.round(read.height() / fy)));
+        // the halo adds cells around the picture: the grid at output resolution again, with them
+        InsufficientHeapException.requireFits((long) outW * outH, px[0], px[1], bytesPerPixel, maxHeap);
+        int decimation = (int) Math.max(1, Math.floor(Math.min(fx, fy) + 1e-9));
+        LoadedDem loaded = DemReader.load(file, new ReadRequest(read, decimation));
+        Dem read0 = loaded.dem();
+        Dem onBody = read0.withGeometry(read0.geometry().withDefaultEllipsoid(body));
+        Dem dem = DemResampler.resample(onBody, outW, outH);
+        int col = (int) Math.round(west / fx);
+        int row = (int) Math.round(north / fy);
+        int w = Math.min(px[0], outW - col);
+        int hgt = Math.min(px[1], outH - row);
+        ElevationStatistics stats = null;
+        if (fileStatistics) {
+            // a read of the whole file, decimated or not, took the file's range on the way
+            boolean wholeFile = read.width() == info.width() && read.height() == info.height();
+            stats = wholeFile ? loaded.sourceStatistics() : streamed.get();
+        }
+        return new Loaded(loaded.info().withDefaultEllipsoid(body), dem, col, row, w, hgt, stats);
+    }
+
+    /**
+     * As {@link #load(Path, Window, OutputSize, Halo, boolean, Ellipsoid, int)} for the bundled sample DEM ({@link
+     * DemReader#SAMPLE_RESOURCE}), copied to a temporary file for the read and deleted after it.
+     */
+    public static Loaded loadSample(Window window, OutputSize size, Halo halo, boolean fileStatistics,
+                                    Ellipsoid body, int bytesPerPixel) throws IOException {
+        Path tmp = java.nio.file.Files.createTempFile("jdem846-sample-", ".tif");
+        try {
+            try (java.io.InputStream in = DemReader.class.getResourceAsStream(DemReader.SAMPLE_RESOURCE)) {
+                if (in == null) {
+                    throw new IOException("the bundled sample DEM is missing from the jar");
+                }
+                java.nio.file.Files.copy(in, tmp, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            }
+            return load(tmp, window, size, halo, fileStatistics, body, bytesPerPixel);
+        } finally {
+            java.nio.file.Files.deleteIfExists(tmp);
+        }
+    }
+
+    /** {@link FileStatistics} of one file: streamed at most once. */
+    private static final class StreamedStatistics implements FileStatistics {
+        private final Path file;
+        private ElevationStatistics statistics;
+
+        StreamedStatistics(Path file) {
+            this.file = file;
+        }
+
+        @Override
+        public ElevationStatistics get() throws IOException {
+            if (statistics == null) {
+                statistics = DemReader.statistics(file);
+            }
+            return statistics;
+        }
+    }
+
+    /** Halo cells on one side: whole output pixels' worth, at most what the grid has on that side. */
+    private static int haloCells(int cells, double factor, int available) {
+        if (cells <= 0 || available <= 0) {
+            return 0;
+        }
+        long pixels = (long) Math.ceil(cells / factor);
+        long source = (long) Math.ceil(pixels * factor);
+        // keep whole pixels: step down by whole pixels when the grid edge is nearer
+        while (source > available && pixels > 0) {
+            pixels--;
+            source = Math.round(pixels * factor);
+        }
+        return (int) Math.max(0, Math.min(available, source));
+    }
+}

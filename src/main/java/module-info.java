@@ -1,0 +1,47 @@
+/**
+ * Shaded relief from digital elevation models: read a DEM ({@link io.github.jdem846.io.DemReader}), render one
+ * picture of it in one call ({@link io.github.jdem846.job.ReliefJob}), or use each stage alone (tint, hillshade,
+ * cast shadows, the sun's position).
+ *
+ * <p>Exported: the packages whose public types a library user handles. Not exported: the format readers
+ * ({@code io.geotiff}, {@code io.esri}, {@code io.source}) and the command line ({@code cli}), which runs from the
+ * self-contained {@code jdem846-cli.jar} on the class path. Apache SIS and GeoAPI are read transitively, since
+ * {@link io.github.jdem846.geo.CrsInfo#sis()} hands out a GeoAPI {@code CoordinateReferenceSystem}.
+ */
+// requires-automatic: TwelveMonkeys and pngencoder have no module-info; module: the name ends in digits (jdem846)
+@SuppressWarnings({"requires-automatic", "module"})
+module io.github.jdem846 {
+    exports io.github.jdem846.geo;
+    exports io.github.jdem846.io;
+    exports io.github.jdem846.job;
+    exports io.github.jdem846.light;
+    exports io.github.jdem846.output;
+    exports io.github.jdem846.raster;
+    exports io.github.jdem846.render;
+    exports io.github.jdem846.shade;
+    exports io.github.jdem846.shadow;
+    exports io.github.jdem846.sun;
+    exports io.github.jdem846.tint;
+
+    // BufferedImage and RenderedImage in the API; ImageIO for reading and writing
+    requires transitive java.desktop;
+    // CRS parsing and WKT; its modules also make GeoAPI (org.opengis.geoapi) and javax.measure readable
+    requires transitive org.apache.sis.referencing;
+    // GDAL_METADATA and .aux.xml
+    requires java.xml;
+    // GeoTIFF decoding (automatic modules, named by their Automatic-Module-Name; the reader's superclass is in core)
+    requires com.twelvemonkeys.imageio.tiff;
+    requires com.twelvemonkeys.imageio.core;
+    // NREL SPA sun positions
+    requires net.e175.klaus.solarpositioning;
+    // PNG encoding (automatic module named after its jar)
+    requires pngencoder;
+
+    // The command line only: optional at run time, so library users need neither. The CLI runs from
+    // jdem846-cli.jar on the class path, where this descriptor is not read.
+    requires static info.picocli;
+    requires static me.tongfei.progressbar;
+    // the CLI's --verbose phase times (CPU and GC time)
+    requires java.management;
+    opens io.github.jdem846.cli to info.picocli;
+}

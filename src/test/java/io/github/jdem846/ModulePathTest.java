@@ -1,0 +1,130 @@
+package io.github.jdem846;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.github.jdem846.io.Window;
+import io.github.jdem846.job.JobListener;
+import io.github.jdem846.job.ReliefJob;
+import io.github.jdem846.job.ReliefResult;
+import io.github.jdem846.job.Sun;
+import io.github.jdem846.render.OutputSize;
+import io.github.jdem846.render.Scene;
+import io.github.jdem846.shadow.ShadowAlgorithm;
+import io.github.jdem846.testing.TestJvm;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.ZonedDateTime;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.spi.ToolProvider;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A library user on the module path: a module that {@code requires io.github.jdem846} and nothing else, compiled and
+ * run with the main classes and the runtime dependencies on {@code --module-path} (no {@code --add-modules}, no
+ * CLI-only jar). It renders README's windowed, real-sun, shadowed job on the bundled sample and writes it with its
+ * sidecars, which loads Apache SIS, GeoAPI, the sun's position and the image writers; the picture equals the same
+ * job run here.
+ */
+class ModulePathTest {
+
+    private static final String MODULE_INFO = """
+            module demo {
+                requires io.github.jdem846;
+            }
+            """;
+
+    private static final String MAIN = """
+            package demo;
+
+            import io.github.jdem846.io.Window;
+            import io.github.jdem846.job.JobListener;
+            import io.github.jdem846.job.ReliefJob;
+            import io.github.jdem846.job.ReliefResult;
+            import io.github.jdem846.job.Sun;
+            import io.github.jdem846.output.WriteOptions;
+            import io.github.jdem846.render.OutputSize;
+            import io.github.jdem846.render.Scene;
+            import io.github.jdem846.shadow.ShadowAlgorithm;
+            import java.nio.file.Path;
+            import java.time.ZonedDateTime;
+
+            public final class Main {
+                public static void main(String[] args) throws Exception {
+                    ReliefResult relief = ReliefJob.ofSample()
+                            .withWindow(Window.world(380000, 3790000, 400000, 3800000))
+                            .withSize(OutputSize.width(400))
+                            .withSun(Sun.at(ZonedDateTime.parse("2024-06-21T06:30-07:00[America/Los_Angeles]")))
+                            .withScene(Scene.defaults().withShadows(ShadowAlgorithm.SWEEP))
+                            .run(JobListener.NONE);
+                    relief.write(Path.of(args[0]), WriteOptions.defaults());
+                    System.out.println("rendered " + relief.width() + "x" + relief.height() + " in module "
+                            + ReliefJob.class.getModule().getName());
+                }
+            }
+            """;
+
+    /** Jars of the tests and of the command line, which a library user does not have. */
+    private static final List<String> NOT_OF_THE_LIBRARY = List.of("test-classes", "surefire", "junit",
+            "opentest4j", "apiguardian", "picocli", "progressbar", "jline");
+
+    @Test
+    void aModuleThatRequiresTheLibraryRendersAndWrites(@TempDir Path dir) throws Exception {
+        List<String> modulePath = libraryModulePath();
+        Path src = dir.resolve("src/demo");
+        Files.createDirectories(src.resolve("demo"));
+        Files.writeString(src.resolve("module-info.java"), MODULE_INFO);
+        Files.writeString(src.resolve("demo/Main.java"), MAIN);
+        Path classes = dir.resolve("mods/demo");
+
+        ByteArrayOutputStream messages = new ByteArrayOutputStream();
+        PrintStream out = new PrintStream(messages, true, StandardCharsets.UTF_8);
+        int compiled = ToolProvider.findFirst("javac").orElseThrow().run(out, out, "-d", classes.toString(),
+                "--module-path", String.join(File.pathSeparator, modulePath),
+                src.resolve("module-info.java").toString(), src.resolve("demo/Main.java").toString());
+        assertEquals(0, compiled, messages.toString(StandardCharsets.UTF_8));
+
+        Path png = dir.resolve("relief.png");
+        List<String> command = new ArrayList<>(List.of(TestJvm.java(), "-Djava.awt.headless=true",
+                "--module-path", dir.resolve("mods") + File.pathSeparator + String.join(File.pathSeparator, modulePath),
+                "-m", "demo/demo.Main", png.toString()));
+        Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+        String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "finished");
+        assertEquals(0, p.exitValue(), output);
+        assertTrue(output.lines().anyMatch("rendered 400x278 in module io.github.jdem846"::equals), output);
+        assertTrue(Files.exists(dir.resolve("relief.pgw")) && Files.exists(dir.resolve("relief.prj")), "sidecars");
+
+        ReliefResult here = ReliefJob.ofSample()
+                .withWindow(Window.world(380000, 3790000, 400000, 3800000))
+                .withSize(OutputSize.width(400))
+                .withSun(Sun.at(ZonedDateTime.parse("2024-06-21T06:30-07:00[America/Los_Angeles]")))
+                .withScene(Scene.defaults().withShadows(ShadowAlgorithm.SWEEP))
+                .run(JobListener.NONE);
+        BufferedImage written = ImageIO.read(png.toFile());
+        assertArrayEquals(here.argb(), written.getRGB(0, 0, here.width(), here.height(), null, 0, here.width()));
+    }
+
+    /** The main classes (an exploded module) and the runtime dependencies of the library. */
+    private static List<String> libraryModulePath() throws Exception {
+        String main = Path.of(ReliefJob.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
+        List<String> path = new ArrayList<>(List.of(main));
+        for (String e : TestJvm.entries()) {
+            if (!e.equals(main) && e.endsWith(".jar") && NOT_OF_THE_LIBRARY.stream().noneMatch(e::contains)) {
+                path.add(e);
+            }
+        }
+        assertTrue(Files.exists(Path.of(main, "module-info.class")), main + " holds the module descriptor");
+        return path;
+    }
+}
