@@ -5,10 +5,11 @@
  *
  * <p>Exported: the packages whose public types a library user handles. Not exported: the format readers
  * ({@code io.geotiff}, {@code io.esri}, {@code io.source}) and the command line ({@code cli}), which runs from the
- * self-contained {@code jdem846-cli.jar} on the class path. Apache SIS and GeoAPI are read transitively, since
+ * self-contained {@code jdem846-cli.jar} on the class path, and {@code parallel} (how stages share a pool and are
+ * cancelled). Apache SIS and GeoAPI are read transitively, since
  * {@link io.github.jdem846.geo.CrsInfo#sis()} hands out a GeoAPI {@code CoordinateReferenceSystem}.
  */
-// requires-automatic: TwelveMonkeys and pngencoder have no module-info; module: the name ends in digits (jdem846)
+// requires-automatic: TwelveMonkeys has no module-info; module: the name ends in digits (jdem846)
 @SuppressWarnings({"requires-automatic", "module"})
 module io.github.jdem846 {
     exports io.github.jdem846.geo;
@@ -34,8 +35,6 @@ module io.github.jdem846 {
     requires com.twelvemonkeys.imageio.core;
     // NREL SPA sun positions
     requires net.e175.klaus.solarpositioning;
-    // PNG encoding (automatic module named after its jar)
-    requires pngencoder;
 
     // The command line only: optional at run time, so library users need neither. The CLI runs from
     // jdem846-cli.jar on the class path, where this descriptor is not read.

@@ -27,7 +27,7 @@ final class TerrainSampler {
      * no-data.
      */
     static double bilinear(float[] v, int w, int h, double x, double y) {
-        // Math.min(Math.max(x, 0), w − 1), by comparisons (see io.github.jdem846.shade.Clamp): x is never NaN here
+        // Math.min(Math.max(x, 0), w − 1), by comparisons (see io.github.jdem846.internal.Clamp): x is never NaN here
         double cx = x <= 0 ? 0 : x >= w - 1 ? w - 1 : x;
         double cy = y <= 0 ? 0 : y >= h - 1 ? h - 1 : y;
         int c0 = (int) Math.floor(cx);
