@@ -1,5 +1,6 @@
 package io.github.jdem846.io;
 
+import io.github.jdem846.testing.TinyTiff;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -1,4 +1,4 @@
-package io.github.jdem846.io;
+package io.github.jdem846.testing;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
@@ -15,16 +15,16 @@ import java.util.TreeMap;
  * {@code width × height} int16 image in one uncompressed strip of zeros; any field can then be set to a broken
  * value, and the strip offset, byte count and next-directory pointer overridden.
  */
-final class TinyTiff {
+public final class TinyTiff {
 
-    static final int SHORT = 3;
-    static final int LONG = 4;
-    static final int SLONG = 9;
-    static final int DOUBLE = 12;
-    static final int ASCII = 2;
+    public static final int SHORT = 3;
+    public static final int LONG = 4;
+    public static final int SLONG = 9;
+    public static final int DOUBLE = 12;
+    public static final int ASCII = 2;
 
     /** Stands in the StripOffsets/TileOffsets values for "where the pixel data start". */
-    static final long AT_DATA = -0x7a7a7a7aL;
+    public static final long AT_DATA = -0x7a7a7a7aL;
 
     private record Field(int type, long[] values, double[] doubles, byte[] ascii) {
     }
@@ -39,7 +39,7 @@ final class TinyTiff {
     }
 
     /** A {@code width × height} int16 image, one uncompressed strip of {@code width × height × 2} zero bytes. */
-    static TinyTiff int16(long width, long height) {
+    public static TinyTiff int16(long width, long height) {
         TinyTiff t = new TinyTiff(new byte[(int) Math.min(1 << 16, width * height * 2)]);
         t.set(256, LONG, width).set(257, LONG, height).set(258, SHORT, 16).set(259, SHORT, 1)
                 .set(262, SHORT, 1).set(273, LONG, AT_DATA).set(277, SHORT, 1).set(278, LONG, height)
@@ -48,47 +48,47 @@ final class TinyTiff {
     }
 
     /** Sets a field of an integer type (SHORT, LONG, SLONG, ...). */
-    TinyTiff set(int tag, int type, long... values) {
+    public TinyTiff set(int tag, int type, long... values) {
         fields.put(tag, new Field(type, values, null, null));
         return this;
     }
 
     /** Sets a DOUBLE field. */
-    TinyTiff doubles(int tag, double... values) {
+    public TinyTiff doubles(int tag, double... values) {
         fields.put(tag, new Field(DOUBLE, null, values, null));
         return this;
     }
 
     /** Sets an ASCII field (NUL-terminated here). */
-    TinyTiff ascii(int tag, String text) {
+    public TinyTiff ascii(int tag, String text) {
         fields.put(tag, new Field(ASCII, null, null, (text + "\0").getBytes(StandardCharsets.ISO_8859_1)));
         return this;
     }
 
-    TinyTiff remove(int tag) {
+    public TinyTiff remove(int tag) {
         fields.remove(tag);
         return this;
     }
 
     /** Replaces the pixel data. */
-    TinyTiff data(byte[] pixels) {
+    public TinyTiff data(byte[] pixels) {
         this.data = pixels;
         return this;
     }
 
     /** Georeferences the grid: ModelPixelScale (sx, sy) and a tie point of cell (0, 0) at (x, y). */
-    TinyTiff georeferenced(double x, double y, double sx, double sy) {
+    public TinyTiff georeferenced(double x, double y, double sx, double sy) {
         return doubles(33550, sx, sy, 0).doubles(33922, 0, 0, 0, x, y, 0);
     }
 
     /** Sets the pointer to the next image directory (0, none, by default). */
-    TinyTiff nextIfd(long offset) {
+    public TinyTiff nextIfd(long offset) {
         this.nextIfd = offset;
         return this;
     }
 
     /** Sets the header's pointer to the first image directory (which is still written at byte 8). */
-    TinyTiff firstIfd(long offset) {
+    public TinyTiff firstIfd(long offset) {
         this.firstIfd = offset;
         return this;
     }
@@ -97,7 +97,7 @@ final class TinyTiff {
      * Makes the image tiled, {@code tileWidth × tileLength} (TileWidth and TileLength as LONG, or SLONG when one
      * is negative), every tile pointing at the same data: {@code tiles} offsets and byte counts.
      */
-    TinyTiff tiled(long tileWidth, long tileLength, int tiles) {
+    public TinyTiff tiled(long tileWidth, long tileLength, int tiles) {
         long[] offsets = new long[tiles];
         long[] counts = new long[tiles];
         java.util.Arrays.fill(offsets, AT_DATA);
@@ -107,7 +107,7 @@ final class TinyTiff {
                 .set(324, LONG, offsets).set(325, LONG, counts);
     }
 
-    byte[] bytes() {
+    public byte[] bytes() {
         int n = fields.size();
         int ifdEnd = 8 + 2 + n * 12 + 4;
         int extra = 0;
@@ -170,7 +170,7 @@ final class TinyTiff {
     }
 
     /** Writes the file {@code name} in {@code dir}. */
-    Path write(Path dir, String name) throws IOException {
+    public Path write(Path dir, String name) throws IOException {
         Path p = dir.resolve(name);
         Files.write(p, bytes());
         return p;
