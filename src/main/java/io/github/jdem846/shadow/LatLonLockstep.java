@@ -1,0 +1,89 @@
+package io.github.jdem846.shadow;
+
+import java.util.Arrays;
+
+/**
+ * The sweep's lines for hard shadows on the bilinear surface of a grid whose step length changes from row to row
+ * (lat/lon grids), without curvature or thin features, walked in lockstep ({@link LockstepBlock}) with the
+ * arithmetic of {@link ReferenceWalk} for such grids: a running maximum of z + tan·P over each line's samples from
+ * two steps upstream on (P = the distance from the line's top, {@link LatLonLines}), and the cells between them
+ * evaluated with their own row's step and floor, so the mask is bit-identical to the line-by-line walk's.
+ */
+final class LatLonLockstep {
+
+    private final SweepGrid g;
+    private final SweepCell rule;
+
+    LatLonLockstep(SweepGrid g, SweepCell rule) {
+        this.g = g;
+        this.rule = rule;
+    }
+
+    /** Computes the cells between lines kFrom … kTo + 1 into w's output. */
+    void walk(SweepWindow w, int kFrom, int kTo) {
+        LockstepBlock block = LockstepBlock.of(g, w, kFrom, kTo);
+        if (block == null) {
+            return;
+        }
+        int lines = block.lines;
+        double tan = g.f.tanElevation;
+        double[] steps = g.f.metresPerStep;
+        double[] floorOfRow = g.floorOfRow;
+        double tFirst = rule.tFirst();
+        LatLonLines at = new LatLonLines(g, kFrom, lines, block.iStart);
+        // per line: the running maximum of z + tan·P, the two samples still to join it, the shadow height
+        double[] best = new double[lines];
+        double[] twoUp = new double[lines];
+        double[] oneUp = new double[lines];
+        double[] h = new double[lines];
+        Arrays.fill(best, Double.NEGATIVE_INFINITY);
+        Arrays.fill(twoUp, Double.NEGATIVE_INFINITY);
+        for (int q = 0; q < lines; q++) {
+            oneUp[q] = SweepCell.lifted(at.edgeZ[q], tan, at.edgeP[q]);
+        }
+        double[] pos = at.pos;
+        int[] top = at.top;
+        double[] zs = block.z;
+        float[] v = g.v;
+        float[] out = w.out();
+        int outStrideJ = block.outStrideJ;
+        int sj = g.strideJ;
+        int jTraced = g.jTraced;
+        for (int i = block.iStart; i >= block.iEnd; i--) {
+            block.sample(i);
+            at.moveTo(i);
+            for (int q = 0; q < lines; q++) {
+                double p = pos[q];
+                double b = SweepCell.higher(best[q], twoUp[q]);
+                best[q] = b;
+                h[q] = SweepCell.heightAt(b, tan, p);
+                twoUp[q] = oneUp[q];
+                oneUp[q] = i <= top[q] ? SweepCell.lifted(zs[q], tan, p) : Double.NEGATIVE_INFINITY;
+            }
+            if (!block.cells(i)) {
+                continue;
+            }
+            int off = block.off;
+            double phi = block.phi;
+            int outBase = block.outBase;
+            int base = block.base;
+            boolean inner = block.inner;
+            int up = block.up;
+            // inline cell evaluation and exclusive bound: see UniformLockstep
+            for (int q = block.q0, qEnd = block.q1; q < qEnd; q++) {
+                int j = off + q;
+                int cell = base + sj * j;
+                double z0 = v[cell];
+                float result = 0f;
+                if (z0 == z0) {
+                    int row = g.rowOf(i, j);
+                    boolean shadow = j >= jTraced ? rule.rayBlockedToEdge(i, j, z0, tan)
+                            : SweepCell.between(h[q], h[q + 1], phi, floorOfRow[row]) > z0;
+                    result = shadow || rule.firstStepBlocked(i, j, cell, z0, inner, up, steps[row] * tan, tFirst, tan)
+                            ? 1f : 0f;
+                }
+                out[outBase + outStrideJ * j] = result;
+            }
+        }
+    }
+}
