@@ -19,18 +19,14 @@ final class LatLonLockstep {
         this.rule = rule;
     }
 
-    /** Computes the cells between lines kFrom … kTo + 1 into w's output. */
-    void walk(SweepWindow w, int kFrom, int kTo) {
-        LockstepBlock block = LockstepBlock.of(g, w, kFrom, kTo);
-        if (block == null) {
-            return;
-        }
+    /** Computes the cells between the block's lines into its window's output. */
+    void walk(LockstepBlock block) {
         int lines = block.lines;
         double tan = g.f.tanElevation;
         double[] steps = g.f.metresPerStep;
         double[] floorOfRow = g.floorOfRow;
         double tFirst = rule.tFirst();
-        LatLonLines at = new LatLonLines(g, kFrom, lines, block.iStart);
+        LatLonLines at = new LatLonLines(g, block.kFrom, lines, block.iStart);
         // per line: the running maximum of z + tan·P, the two samples still to join it, the shadow height
         double[] best = new double[lines];
         double[] twoUp = new double[lines];
@@ -45,7 +41,7 @@ final class LatLonLockstep {
         int[] top = at.top;
         double[] zs = block.z;
         float[] v = g.v;
-        float[] out = w.out();
+        float[] out = block.w.out();
         int outStrideJ = block.outStrideJ;
         int sj = g.strideJ;
         int jTraced = g.jTraced;

@@ -11,6 +11,8 @@ package io.github.jdem846.shadow;
 final class LockstepBlock {
 
     private final SweepGrid g;
+    /** The window whose cells the block computes. */
+    final SweepWindow w;
     final int kFrom;
     /** The number of lines, kTo − kFrom + 2; cells lie between lines q and q + 1, q = 0 … lines − 2. */
     final int lines;
@@ -35,8 +37,6 @@ final class LockstepBlock {
     /** True when major index i + 1 is on the grid; then up = the flat index of frame cell (i + 1, 0). */
     boolean inner;
     int up;
-
-    private final SweepWindow w;
 
     private LockstepBlock(SweepGrid g, SweepWindow w, int kFrom, int kTo, int iStart, int iEnd) {
         this.g = g;

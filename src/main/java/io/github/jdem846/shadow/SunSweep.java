@@ -4,6 +4,7 @@ import io.github.jdem846.parallel.Cancellation;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
 import java.util.concurrent.ForkJoinPool;
+import java.util.function.Consumer;
 
 /**
  * The shadow test of the ray march in O(cells): straight lines parallel to the sun direction, one cell apart across
@@ -54,7 +55,7 @@ final class SunSweep {
     private final ReferenceWalk reference;
     private final UniformLockstep uniform;
     private final LatLonLockstep latLon;
-    private final LevelsWalk levels;
+    private final SweepCell rule;
 
     SunSweep(Dem dem, RayFrame frame, boolean bilinear, boolean firstCellTest) {
         this(dem, frame, bilinear, firstCellTest, true);
@@ -78,12 +79,11 @@ final class SunSweep {
         this.thinFeatures = thinFeatures;
         this.lockstepAllowed = lockstepAllowed;
         this.g = new SweepGrid(dem, frame, bilinear, firstCellTest, terrainMinimum);
-        SweepCell rule = new SweepCell(g);
+        this.rule = new SweepCell(g);
         ThinFeatures thin = thinFeatures ? new ThinFeatures(g) : null;
         this.reference = new ReferenceWalk(g, rule, thin);
         this.uniform = new UniformLockstep(g, rule, thin);
         this.latLon = new LatLonLockstep(g, rule);
-        this.levels = new LevelsWalk(g, rule);
     }
 
     /** The lowest floor of all rows: no line height below it is ever used (see the class comment). */
@@ -99,9 +99,9 @@ final class SunSweep {
         boolean lockstep = lockstepAllowed && g.bilinear && g.f.curvature == 0;
         BlockWork work;
         if (lockstep && g.uniform()) {
-            work = uniform::walk;
+            work = inLockstep(uniform::walk);
         } else if (lockstep && !thinFeatures) {
-            work = latLon::walk;
+            work = inLockstep(latLon::walk);
         } else {
             work = reference::walk;
         }
@@ -124,14 +124,18 @@ final class SunSweep {
         if (!canRunLevels() || tans.length > 31) {
             throw new IllegalStateException("runLevels needs the lockstep case and at most 31 elevations");
         }
-        boolean uniformGrid = g.uniform();
-        forEachBlock(win, haloSteps, null, pool, (w, from, to) -> {
-            if (uniformGrid) {
-                levels.walkUniform(w, from, to, tans, bits);
-            } else {
-                levels.walkLatLon(w, from, to, tans, bits);
+        LevelsWalk levels = new LevelsWalk(g, rule, tans);
+        forEachBlock(win, haloSteps, null, pool, inLockstep(block -> levels.walk(block, bits)));
+    }
+
+    /** The lockstep walk {@code walk} of each block of lines that meets the window ({@link LockstepBlock}). */
+    private BlockWork inLockstep(Consumer<LockstepBlock> walk) {
+        return (w, kFrom, kTo) -> {
+            LockstepBlock block = LockstepBlock.of(g, w, kFrom, kTo);
+            if (block != null) {
+                walk.accept(block);
             }
-        });
+        };
     }
 
     /** One block of lines kFrom … kTo + 1 of a window. */

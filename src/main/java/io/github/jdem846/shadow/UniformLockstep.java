@@ -22,12 +22,10 @@ final class UniformLockstep {
         this.thin = thin;
     }
 
-    /** Computes the cells between lines kFrom … kTo + 1 into w's output. */
-    void walk(SweepWindow w, int kFrom, int kTo) {
-        LockstepBlock block = LockstepBlock.of(g, w, kFrom, kTo);
-        if (block == null) {
-            return;
-        }
+    /** Computes the cells between the block's lines into its window's output. */
+    void walk(LockstepBlock block) {
+        SweepWindow w = block.w;
+        int kFrom = block.kFrom;
         int lines = block.lines;
         double tan = g.f.tanElevation;
         double drop = tan * g.uniformStep;
