@@ -146,6 +146,7 @@ final class LevelsWalk {
         int up = block.up;
         int rowI = rowMul * (g.r0 + g.ri * i);         // the table row of cell j: rowI + rowJ·j
         int rowJ = rowMul * g.rj;
+        // inline cell evaluation and exclusive bound: see UniformLockstep
         for (int q = block.q0, qEnd = block.q1; q < qEnd; q++) {
             int j = off + q;
             int cell = block.base + sj * j;

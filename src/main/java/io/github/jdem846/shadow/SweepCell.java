@@ -91,8 +91,7 @@ final class SweepCell {
     /**
      * Offset of the first first-step sample in eighths: eighths up to one cell on the bilinear surface, else just
      * the one-cell sample. With nearest sampling the eighths would meet the next cell's block from t = ½ on while
-     * the ray is still only half a step up, shading cells that the nearest march leaves lit (notes/sweep-bugs.md
-     * item 1).
+     * the ray is still only half a step up, shading cells that the nearest march leaves lit.
      */
     int firstSample() {
         return g.firstCellTest && g.bilinear ? 1 : SweepGrid.SUB_STEPS;
