@@ -19,7 +19,6 @@ final class LatLonLines {
      */
     final double[] edgeZ;
     final double[] edgeP;
-    private final double[] step;
 
     /** The lines kFrom … kFrom + lines − 1 of a walk that starts at major index iStart. */
     LatLonLines(SweepGrid g, int kFrom, int lines, int iStart) {
@@ -29,7 +28,6 @@ final class LatLonLines {
         top = new int[lines];
         edgeZ = new double[lines];
         edgeP = new double[lines];
-        step = new double[lines];
         double[] steps = g.f.metresPerStep;
         boolean edgeHalf = iStart == g.nMaj - 1 && g.upstreamEdgeSample;
         for (int q = 0; q < lines; q++) {
@@ -56,14 +54,16 @@ final class LatLonLines {
             int near = kFrom + g.pf[i] + (g.pr[i] >= 0.5 ? 1 : 0);
             int last = g.nMin - 1;
             for (int q = 0; q < lines; q++) {
-                step[q] = steps[g.r0 + g.rj * Math.max(0, Math.min(last, near + q))];
+                if (i < top[q]) {
+                    pos[q] += steps[g.r0 + g.rj * Math.max(0, Math.min(last, near + q))];
+                }
             }
         } else {
-            java.util.Arrays.fill(step, steps[g.r0 + g.ri * i]);      // the step of every line when y-major
-        }
-        for (int q = 0; q < lines; q++) {
-            if (i < top[q]) {
-                pos[q] += step[q];
+            double step = steps[g.r0 + g.ri * i];                   // the step of every line when y-major
+            for (int q = 0; q < lines; q++) {
+                if (i < top[q]) {
+                    pos[q] += step;
+                }
             }
         }
     }

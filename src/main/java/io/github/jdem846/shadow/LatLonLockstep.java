@@ -46,15 +46,29 @@ final class LatLonLockstep {
         int sj = g.strideJ;
         int jTraced = g.jTraced;
         for (int i = block.iStart; i >= block.iEnd; i--) {
-            block.sample(i);
+            // the direct run read in this loop, fused with the running maxima, and exclusive bounds: see
+            // UniformLockstep
+            block.sampleEdges(i);
             at.moveTo(i);
-            for (int q = 0; q < lines; q++) {
-                double p = pos[q];
-                double b = SweepCell.higher(best[q], twoUp[q]);
-                best[q] = b;
-                h[q] = SweepCell.heightAt(b, tan, p);
-                twoUp[q] = oneUp[q];
-                oneUp[q] = i <= top[q] ? SweepCell.lifted(zs[q], tan, p) : Double.NEGATIVE_INFINITY;
+            int d0 = block.direct0;
+            int d1 = block.direct1;
+            for (int q = 0; q < d0; q++) {
+                SweepCell.climb(best, twoUp, oneUp, h, q, i <= top[q] ? zs[q] : Double.NaN, tan, pos[q]);
+            }
+            if (d0 < d1) {
+                int k = block.at0;
+                double fr = g.pr[i];
+                double za = v[k];
+                for (int q = d0; q < d1; q++) {
+                    k += sj;
+                    double zb = v[k];
+                    double z = fr == 0 ? za : SweepGrid.mix(za, zb, fr);
+                    SweepCell.climb(best, twoUp, oneUp, h, q, i <= top[q] ? z : Double.NaN, tan, pos[q]);
+                    za = zb;
+                }
+            }
+            for (int q = d1; q < lines; q++) {
+                SweepCell.climb(best, twoUp, oneUp, h, q, i <= top[q] ? zs[q] : Double.NaN, tan, pos[q]);
             }
             if (!block.cells(i)) {
                 continue;

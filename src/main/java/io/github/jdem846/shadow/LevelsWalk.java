@@ -84,10 +84,7 @@ final class LevelsWalk {
             for (int q = 0; q < lines; q++) {
                 double z = zs[q];
                 for (int e = 0, at = q * n; e < n; e++, at++) {
-                    double b = best[at];
-                    h[at] = b;
-                    best[at] = SweepCell.joined(b, prev[at], drop[e]);
-                    prev[at] = SweepCell.pending(z, drop[e]);
+                    SweepCell.advance(best, prev, h, at, z, drop[e]);
                 }
             }
             cells(block, i, h, bits);
@@ -118,12 +115,7 @@ final class LevelsWalk {
                 double p = pos[q];
                 double z = i <= top[q] ? zs[q] : Double.NaN;
                 for (int e = 0, k = q * n; e < n; e++, k++) {
-                    double tan = tans[e];
-                    double b = SweepCell.higher(best[k], twoUp[k]);
-                    best[k] = b;
-                    h[k] = SweepCell.heightAt(b, tan, p);
-                    twoUp[k] = oneUp[k];
-                    oneUp[k] = SweepCell.lifted(z, tan, p);
+                    SweepCell.climb(best, twoUp, oneUp, h, k, z, tans[e], p);
                 }
             }
             cells(block, i, h, bits);

@@ -3,7 +3,8 @@ package io.github.jdem846.shadow;
 /**
  * A block of lines kFrom … kTo + 1 walked in lockstep, one major index at a time from the sun's side (the lockstep
  * walks {@link UniformLockstep}, {@link LatLonLockstep}, {@link LevelsWalk}): the major indices it walks, its lines'
- * samples at the current one ({@link #sample}) and the cells between its lines there ({@link #cells}). At one major
+ * samples at the current one ({@link #sample}; or {@link #sampleEdges} for a walk that reads the direct run in its
+ * own loop) and the cells between its lines there ({@link #cells}). At one major
  * index every line samples the same fraction between the same two minor cells, so the samples of all lines (and the
  * cells between them) are neighbours in memory: one contiguous run of the row when the sun is north or south
  * (y-major), a few cache lines reused for 16 columns otherwise.
@@ -23,6 +24,11 @@ final class LockstepBlock {
     final double[] z;
     /** The index stride of one minor step in the window's output. */
     final int outStrideJ;
+
+    /** The direct run at the current major index, set by {@link #sampleEdges}. */
+    int direct0;
+    int direct1;
+    int at0;
 
     // the cells between the lines at the current major index, set by cells(i)
     /** Minor index of the cell between lines q and q + 1 is off + q; it lies phi of the way from q to q + 1. */
@@ -64,46 +70,64 @@ final class LockstepBlock {
     }
 
     /**
-     * Reads every line's sample at major index i into {@link #z}: the lines whose two minor cells are on the grid
-     * straight from the array, the others through {@link SweepGrid#lineSample}.
+     * Reads every line's sample at major index i into {@link #z}: {@link #sampleEdges} and then the direct run
+     * straight from the array. For the multi-elevation walk, whose per-line work (a loop over the elevations)
+     * outweighs the extra pass; the single-elevation walks read the direct run in their own loops (see {@link
+     * UniformLockstep}).
      */
     void sample(int i) {
-        int pfi = g.pf[i];
-        double fr = g.pr[i];
-        int qa = Math.max(0, -kFrom - pfi);
-        int qb = Math.min(lines - 1, g.cellHi - 1 - kFrom - pfi);
-        int before = Math.min(qa, lines);
+        sampleEdges(i);
+        if (direct0 >= direct1) {
+            return;
+        }
         double[] zs = z;
-        for (int q = 0; q < before; q++) {
-            zs[q] = g.lineSample(kFrom + q, i);
-        }
-        if (qa <= qb) {
-            float[] v = g.v;
-            int sj = g.strideJ;
-            int at = g.baseI[i] + sj * (kFrom + qa + pfi);
-            // exclusive bounds (q < qEnd): with q <= qb C2 kept loop-limit checks that deoptimised these loops
-            if (fr == 0) {
-                for (int q = qa, qEnd = qb + 1; q < qEnd; q++, at += sj) {
-                    zs[q] = v[at];
-                }
-            } else {
-                double za = v[at];
-                for (int q = qa, qEnd = qb + 1; q < qEnd; q++) {
-                    at += sj;
-                    double zb = v[at];
-                    zs[q] = SweepGrid.mix(za, zb, fr);
-                    za = zb;
-                }
+        float[] v = g.v;
+        int sj = g.strideJ;
+        int at = at0;
+        double fr = g.pr[i];
+        // exclusive bounds (q < qEnd) avoid C2's loop-limit-check deoptimisations
+        if (fr == 0) {
+            for (int q = direct0, qEnd = direct1; q < qEnd; q++, at += sj) {
+                zs[q] = v[at];
             }
-        }
-        for (int q = Math.max(qb + 1, before); q < lines; q++) {
-            zs[q] = g.lineSample(kFrom + q, i);
+        } else {
+            double za = v[at];
+            for (int q = direct0, qEnd = direct1; q < qEnd; q++) {
+                at += sj;
+                double zb = v[at];
+                zs[q] = SweepGrid.mix(za, zb, fr);
+                za = zb;
+            }
         }
     }
 
     /**
+     * Sets the direct run at major index i, the lines {@link #direct0} … {@link #direct1} − 1 whose two minor cells
+     * are both on the grid (line direct0 reads from flat index {@link #at0} on, one minor stride per line), and reads
+     * the samples of the other lines, near the grid's minor edges, into {@link #z} ({@link SweepGrid#lineSample}).
+     */
+    void sampleEdges(int i) {
+        int pfi = g.pf[i];
+        int qa = Math.max(0, -kFrom - pfi);
+        int qb = Math.min(lines - 1, g.cellHi - 1 - kFrom - pfi);
+        int d0 = Math.min(qa, lines);
+        int d1 = Math.max(qb + 1, d0);
+        double[] zs = z;
+        for (int q = 0; q < d0; q++) {
+            zs[q] = g.lineSample(kFrom + q, i);
+        }
+        for (int q = d1; q < lines; q++) {
+            zs[q] = g.lineSample(kFrom + q, i);
+        }
+        direct0 = d0;
+        direct1 = d1;
+        at0 = g.baseI[i] + g.strideJ * (kFrom + qa + pfi);
+    }
+
+    /**
      * Sets the fields that place the cells between the lines at major index i; false when none of them is in the
-     * window.
+     * window. Each walk copies them into locals and runs its own loop over the cells, so that the cell's evaluation
+     * stays inline in that loop: as one method per cell it was up to 25 % slower (see {@link UniformLockstep}).
      */
     boolean cells(int i) {
         if (i > w.wi1()) {

@@ -29,6 +29,18 @@ final class SweepCell {
         return z == z ? z - drop : Double.NEGATIVE_INFINITY;
     }
 
+    /**
+     * Line state k one major step on, whose sample there is z: its shadow height h[k] is the running maximum best[k]
+     * of the samples two or more steps upstream, and the sample one step upstream, prev[k] ({@link #pending}), joins
+     * it.
+     */
+    static void advance(double[] best, double[] prev, double[] h, int k, double z, double drop) {
+        double b = best[k];
+        h[k] = b;
+        best[k] = joined(b, prev[k], drop);
+        prev[k] = pending(z, drop);
+    }
+
     // --- running maximum on a grid whose step length changes from row to row: values of z + tan·P ---
 
     /** A line's sample z at distance P from the line's top as it joins the running maximum; {@code −∞} for NaN. */
@@ -44,6 +56,20 @@ final class SweepCell {
     /** The shadow height at distance P from the line's top, from the running maximum of z + tan·P. */
     static double heightAt(double best, double tan, double p) {
         return best - tan * p;
+    }
+
+    /**
+     * Line state k at distance P from the line's top, whose sample there is z (NaN = none): the sample two steps
+     * upstream, twoUp[k], joins the running maximum best[k] ({@link #higher}), h[k] is the shadow height, and z
+     * waits two steps in oneUp[k] ({@link #lifted}).
+     */
+    static void climb(double[] best, double[] twoUp, double[] oneUp, double[] h, int k, double z, double tan,
+                      double p) {
+        double b = higher(best[k], twoUp[k]);
+        best[k] = b;
+        h[k] = heightAt(b, tan, p);
+        twoUp[k] = oneUp[k];
+        oneUp[k] = lifted(z, tan, p);
     }
 
     // --- the cell against its two lines ---
