@@ -10,8 +10,8 @@ import java.util.Arrays;
  *
  * <p>The single-elevation walks keep their own loops over the lines' running maxima (a few lines each, on the same
  * {@link SweepCell} pieces): an interface over the two kinds of line state, one elevation or several, cost the
- * single-elevation lat/lon walk 12–22 % (JMH {@code RayTraceBenchmark.sweep}, mirrored-latlon, three alternating
- * pairs). {@code SoftSweepOneWalkTest} holds this walk to them, level by level.
+ * single-elevation lat/lon walk 12–22 % (JMH, three alternating pairs). {@code SoftSweepOneWalkTest} holds this
+ * walk to them, level by level.
  */
 final class LevelsWalk {
 
