@@ -272,7 +272,7 @@ class ShadowPropertiesTest {
         // The sweep interpolates shadow heights between sun-parallel lines one cell apart, which shortens a thin
         // spike's shadow off-axis: up to 2.2 cells short here (az 160°/250°, e 15°), so the plain sweep gets 2.5
         // cells. With thin features on it also tests each cell's own ray at the strip's steepest sample
-        // (SunSweep.StripHull) and sees the spike whole, as the march does; it samples only at whole major steps,
+        // (StripHull) and sees the spike whole, as the march does; it samples only at whole major steps,
         // 1/max(|sin a|, |cos a|) ≤ √2 cells of ray apart, so its last shaded cell may lie up to one such step short
         // (1.2 cells at az 300°, e 30°).
         boolean nearest = v.options().sampling() == Sampling.NEAREST
@@ -296,7 +296,7 @@ class ShadowPropertiesTest {
     void theSweepWithThinFeaturesShadesAThinSpikesLeeAsExactDoes() {
         // A one-cell 300 m spike on flat ground (30 m cells), read bilinearly: a pyramid whose peak is one point.
         // Off-axis the sweep's lines pass beside the peak and see part of it; with thin features each cell's
-        // own-ray sample at the strip's steepest point (SunSweep.StripHull) sees what the cell's own march sees, so
+        // own-ray sample at the strip's steepest point (StripHull) sees what the cell's own march sees, so
         // the sweep misses none of exact's shadow (the plain sweep misses up to 8 of 35 cells). Its lines'
         // interpolation still widens the shadow: up to 15 cells beside exact's 35, bounded here at half.
         int n = 121;
