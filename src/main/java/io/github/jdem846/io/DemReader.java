@@ -69,7 +69,19 @@ public final class DemReader {
      * @throws IOException naming the file when it cannot be read
      */
     public static LoadedDem load(Path file, ReadRequest request) throws IOException {
-        return load(file, request, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
+        return load(DemInput.of(file), request);
+    }
+
+    /**
+     * Reads like {@link #load(Path, ReadRequest)} from one file or a mosaic of several.
+     *
+     * @param input   the DEM file or files
+     * @param request the window, the decimation and the memory limit
+     * @return the grid with the header and the statistics of the cells read
+     * @throws IOException naming the file when it cannot be read
+     */
+    public static LoadedDem load(DemInput input, ReadRequest request) throws IOException {
+        return load(input, request, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
     }
 
     /** Fewest cells for a separately read part: below this, opening another reader costs more than it saves. */
@@ -83,8 +95,14 @@ public final class DemReader {
      */
     static LoadedDem load(Path file, ReadRequest request, int parallelism, long minCellsPerPart)
             throws IOException {
+        return load(DemInput.of(file), request, parallelism, minCellsPerPart);
+    }
+
+    static LoadedDem load(DemInput input, ReadRequest request, int parallelism, long minCellsPerPart)
+            throws IOException {
         Objects.requireNonNull(request, "request");
-        try (RasterSource source = open(file)) {
+        Path file = input.first();
+        try (RasterSource source = open(input)) {
             DemInfo info = source.info();
             Window.Cells cells = request.window() == null
                     ? new Window.Cells(0, 0, info.width(), info.height())
@@ -100,7 +118,7 @@ public final class DemReader {
                     advice);
             float[] values = new float[outW * outH];
             double noData = info.noDataOrNaN();
-            ElevationStatistics stats = readInParts(file, source, cells, d, parallelism, minCellsPerPart,
+            ElevationStatistics stats = readInParts(input, source, cells, d, parallelism, minCellsPerPart,
                     (src, part, outRow0) -> BlockReader.read(src, part, d, noData,
                             (row, v) -> System.arraycopy(v, 0, values, (outRow0 + row) * outW, outW)));
             GridGeometry g = info.geometry().window(cells.col(), cells.row(), cells.width(), cells.height());
@@ -125,7 +143,7 @@ public final class DemReader {
      * decimation and of the format's row block; fewer bands when their buffers would not fit in the heap that is
      * left.
      */
-    private static ElevationStatistics readInParts(Path file, RasterSource source, Window.Cells cells, int d,
+    private static ElevationStatistics readInParts(DemInput input, RasterSource source, Window.Cells cells, int d,
                                                    int parallelism, long minCellsPerPart, PartReader reader)
             throws IOException {
         int unit = d * Math.max(1, source.naturalRowBlock()) / gcd(d, Math.max(1, source.naturalRowBlock()));
@@ -141,14 +159,14 @@ public final class DemReader {
         if (parts == 1) {
             return reader.read(source, cells, 0);
         }
-        return readParts(file, source, cells, d, parts, (int) ((units + parts - 1) / parts) * unit, reader);
+        return readParts(input, source, cells, d, parts, (int) ((units + parts - 1) / parts) * unit, reader);
     }
 
     /**
      * Reads {@code cells} in bands of {@code rowsPerPart} rows at once: the first through {@code first} on the
      * calling thread, the others each through a reader of its own on a thread of its own.
      */
-    private static ElevationStatistics readParts(Path file, RasterSource first, Window.Cells cells, int d,
+    private static ElevationStatistics readParts(DemInput input, RasterSource first, Window.Cells cells, int d,
                                                  int parts, int rowsPerPart, PartReader reader)
             throws IOException {
         java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(parts - 1,
@@ -167,7 +185,7 @@ public final class DemReader {
                 Window.Cells part = new Window.Cells(cells.col(), cells.row() + row0, cells.width(),
                         Math.min(rowsPerPart, cells.height() - row0));
                 others.add(pool.submit(() -> {
-                    try (RasterSource own = open(file)) {
+                    try (RasterSource own = open(input)) {
                         return reader.read(own, part, row0 / d);
                     }
                 }));
@@ -180,7 +198,7 @@ public final class DemReader {
             return stats;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            throw new java.io.InterruptedIOException("reading " + file + " was interrupted");
+            throw new java.io.InterruptedIOException("reading " + input + " was interrupted");
         } catch (java.util.concurrent.ExecutionException e) {
             Throwable cause = e.getCause();
             if (cause instanceof IOException io) {
@@ -225,6 +243,22 @@ public final class DemReader {
     }
 
     /**
+     * The existing files a read of {@code input} opens: {@link #filesOf(Path)} of each of its files.
+     *
+     * @param input the DEM file or files
+     * @return the data files and their sidecars that exist, without repeats
+     * @throws DemFormatException when a file is missing or not a DEM this program reads
+     * @throws IOException        when a file cannot be examined
+     */
+    public static java.util.List<Path> filesOf(DemInput input) throws IOException {
+        java.util.LinkedHashSet<Path> files = new java.util.LinkedHashSet<>();
+        for (Path file : input.files()) {
+            files.addAll(filesOf(file));
+        }
+        return java.util.List.copyOf(files);
+    }
+
+    /**
      * Reads the header only.
      *
      * @param file the DEM file
@@ -232,7 +266,18 @@ public final class DemReader {
      * @throws IOException naming the file when it cannot be read
      */
     public static DemInfo inspect(Path file) throws IOException {
-        try (RasterSource source = open(file)) {
+        return inspect(DemInput.of(file));
+    }
+
+    /**
+     * Reads the header of one file or of a mosaic.
+     *
+     * @param input the DEM file or files
+     * @return format, size, data type, georeferencing, CRS and declared no-data
+     * @throws IOException naming the file when it cannot be read
+     */
+    public static DemInfo inspect(DemInput input) throws IOException {
+        try (RasterSource source = open(input)) {
             return source.info();
         }
     }
@@ -246,20 +291,37 @@ public final class DemReader {
      * @throws IOException naming the file when it cannot be read
      */
     public static ElevationStatistics statistics(Path file) throws IOException {
-        return statistics(file, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
+        return statistics(DemInput.of(file));
+    }
+
+    /**
+     * {@link #statistics(Path)} of one file or of a mosaic.
+     *
+     * @param input the DEM file or files
+     * @return the statistics of every valid cell at full resolution
+     * @throws IOException naming the file when it cannot be read
+     */
+    public static ElevationStatistics statistics(DemInput input) throws IOException {
+        return statistics(input, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
     }
 
     /** {@link #statistics(Path)} in up to {@code parallelism} bands of at least {@code minCellsPerPart} cells. */
     static ElevationStatistics statistics(Path file, int parallelism, long minCellsPerPart) throws IOException {
-        try (RasterSource source = open(file)) {
+        return statistics(DemInput.of(file), parallelism, minCellsPerPart);
+    }
+
+    static ElevationStatistics statistics(DemInput input, int parallelism, long minCellsPerPart)
+            throws IOException {
+        Path file = input.first();
+        try (RasterSource source = open(input)) {
             DemInfo info = source.info();
             double noData = info.noDataOrNaN();
             Window.Cells all = new Window.Cells(0, 0, info.width(), info.height());
             requireBandFits(file, source, all, 1);
             MemoryGuard.requireFits(file, 0, 0, BlockReader.bandBytes(source, all, 1), "give Java more heap"
                     + " with -Xmx");
-            return readInParts(file, source, all, 1, parallelism, minCellsPerPart, (src, part, outRow0) -> BlockReader.read(src, part, 1, noData,
-                            (row, v) -> { }));
+            return readInParts(input, source, all, 1, parallelism, minCellsPerPart,
+                    (src, part, outRow0) -> BlockReader.read(src, part, 1, noData, (row, v) -> { }));
         }
     }
 
@@ -297,6 +359,15 @@ public final class DemReader {
         } finally {
             Files.deleteIfExists(tmp);
         }
+    }
+
+    /** Opens the right {@link RasterSource} for one file or a mosaic (package-private for tests). */
+    static RasterSource open(DemInput input) throws IOException {
+        if (input.isSingleFile()) {
+            return open(input.first());
+        }
+        throw new DemFormatException(input.first(), "is one of " + input.files().size()
+                + " files: reading several files as one grid is not supported yet");
     }
 
     /** Opens the right {@link RasterSource} for the file (package-private for tests). */

@@ -2,6 +2,7 @@ package io.github.jdem846.job;
 
 import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.io.DemInfo;
+import io.github.jdem846.io.DemInput;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.LoadedDem;
 import io.github.jdem846.io.ReadRequest;
@@ -136,6 +137,12 @@ final class DemLoader {
      */
     public static Loaded load(Path file, Window window, OutputSize size, Halo halo, boolean fileStatistics,
                               Ellipsoid body, int bytesPerPixel) throws IOException {
+        return load(DemInput.of(file), window, size, halo, fileStatistics, body, bytesPerPixel);
+    }
+
+    /** As {@link #load(Path, Window, OutputSize, Halo, boolean, Ellipsoid, int)} for one file or a mosaic. */
+    public static Loaded load(DemInput file, Window window, OutputSize size, Halo halo, boolean fileStatistics,
+                              Ellipsoid body, int bytesPerPixel) throws IOException {
         Objects.requireNonNull(size, "size");
         Objects.requireNonNull(halo, "halo");
         Objects.requireNonNull(body, "body");
@@ -201,10 +208,10 @@ final class DemLoader {
 
     /** {@link FileStatistics} of one file: streamed at most once. */
     private static final class StreamedStatistics implements FileStatistics {
-        private final Path file;
+        private final DemInput file;
         private ElevationStatistics statistics;
 
-        StreamedStatistics(Path file) {
+        StreamedStatistics(DemInput file) {
             this.file = file;
         }
 

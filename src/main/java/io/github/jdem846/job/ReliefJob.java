@@ -2,6 +2,7 @@ package io.github.jdem846.job;
 
 import io.github.jdem846.internal.Clamp;
 import io.github.jdem846.io.DemInfo;
+import io.github.jdem846.io.DemInput;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.Window;
 import io.github.jdem846.output.InputProtection;
@@ -42,8 +43,8 @@ import java.util.Objects;
  * <p>Immutable and thread-safe; {@link #run} may be called from several threads at once. Interrupting the calling
  * thread stops a run with {@link InterruptedException}.
  *
- * @param input     the DEM file (GeoTIFF, GridFloat, ESRI ASCII, BIL, SRTM HGT), or {@code null} for the bundled
- *                  sample DEM
+ * @param input     the DEM file (GeoTIFF, GridFloat, ESRI ASCII, BIL, SRTM HGT) or files read as one grid, or
+ *                  {@code null} for the bundled sample DEM
  * @param product   what to make
  * @param scene     the stages and their settings; its light is replaced by {@code sun}'s. For {@link
  *                  Product#HILLSHADE} only its hillshade method and options count, for {@link Product#TINT} only
@@ -55,7 +56,7 @@ import java.util.Objects;
  *                  time)
  * @param execution threads and tile size; the result does not depend on them
  */
-public record ReliefJob(Path input, Product product, Scene scene, Window window, OutputSize size, Sun sun,
+public record ReliefJob(DemInput input, Product product, Scene scene, Window window, OutputSize size, Sun sun,
                         Body body, RenderSettings execution) {
 
     public ReliefJob {
@@ -74,6 +75,17 @@ public record ReliefJob(Path input, Product product, Scene scene, Window window,
      * @return the job, to be refined with the {@code with…} methods
      */
     public static ReliefJob of(Path dem) {
+        return of(DemInput.of(dem));
+    }
+
+    /**
+     * The whole of {@code dem} (one file or several read as one grid) as a relief picture with the original's
+     * defaults, on every processor.
+     *
+     * @param dem the DEM file or files
+     * @return the job, to be refined with the {@code with…} methods
+     */
+    public static ReliefJob of(DemInput dem) {
         return new ReliefJob(dem, Product.RELIEF, Scene.defaults(), null, OutputSize.FULL, Sun.ORIGINAL_DEFAULT,
                 Body.EARTH, RenderSettings.defaults());
     }
@@ -84,7 +96,7 @@ public record ReliefJob(Path input, Product product, Scene scene, Window window,
      * @return the job, to be refined with the {@code with…} methods
      */
     public static ReliefJob ofSample() {
-        return of(null);
+        return of((DemInput) null);
     }
 
     /**

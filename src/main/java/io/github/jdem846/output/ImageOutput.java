@@ -102,6 +102,38 @@ public final class ImageOutput {
     }
 
     /**
+     * Opens an RGBA image to be written band of rows by band of rows ({@link ImageSink}); the file is the one
+     * {@link #writeRgba} writes for the same pixels.
+     *
+     * @param file    the target; {@code .png}, {@code .tif} or {@code .tiff}
+     * @param width   pixels across
+     * @param height  pixels down
+     * @param geo     where the image lies on the ground, or {@code null}
+     * @param options how to write
+     * @return the sink; close it (try-with-resources) whether or not it was committed
+     * @throws IllegalArgumentException for an unsupported extension or size
+     */
+    public static ImageSink openRgba(Path file, int width, int height, GeoReference geo, WriteOptions options) {
+        return new BufferedImageSink(file, width, height, true, geo, options);
+    }
+
+    /**
+     * Opens an 8-bit single-band image to be written band of rows by band of rows ({@link ImageSink}); the file is
+     * the one {@link #writeGray} writes for the same samples.
+     *
+     * @param file    the target; {@code .png}, {@code .tif} or {@code .tiff}
+     * @param width   pixels across
+     * @param height  pixels down
+     * @param geo     where the image lies on the ground, or {@code null}
+     * @param options how to write (its no-data value as for {@link #writeGray})
+     * @return the sink; close it (try-with-resources) whether or not it was committed
+     * @throws IllegalArgumentException for an unsupported extension or size
+     */
+    public static ImageSink openGray(Path file, int width, int height, GeoReference geo, WriteOptions options) {
+        return new BufferedImageSink(file, width, height, false, geo, options);
+    }
+
+    /**
      * A {@code TYPE_INT_ARGB} image backed by {@code argb} (no copy: changes to one show in the other).
      *
      * @param argb   non-premultiplied ARGB pixels, row-major, {@code width × height}
