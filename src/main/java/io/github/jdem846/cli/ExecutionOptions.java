@@ -64,8 +64,11 @@ public final class ExecutionOptions {
             } catch (NumberFormatException e) {
                 throw new TypeConversionException(expected);
             }
-            if (n <= 0 || n > Long.MAX_VALUE >> Math.max(0, shift)) {
-                throw new TypeConversionException(expected + " (above 0)");
+            if (n <= 0) {
+                throw new TypeConversionException(expected + ", above 0");
+            }
+            if (n > Long.MAX_VALUE >> Math.max(0, shift)) {
+                throw new TypeConversionException(expected + ", below 8 EiB");
             }
             return n << Math.max(0, shift);
         }

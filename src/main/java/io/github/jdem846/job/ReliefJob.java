@@ -23,6 +23,7 @@ import io.github.jdem846.sun.Body;
 import io.github.jdem846.sun.SunPosition;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
@@ -386,10 +387,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         PicturePlan plan = planned.plan();
         ElevationStatistics statistics = needsStatistics(s) ? planned.statistics().get() : null;
         listener.phaseDone("read");
-        for (String notice : plan.info().notices()) {
-            listener.notice(notice);
-        }
-        ScaleNotice.of(plan.info().geometry()).ifPresent(listener::notice);
+        List<String> notices = new ArrayList<>(plan.info().notices());
+        ScaleNotice.of(plan.info().geometry()).ifPresent(notices::add);
         Scene scene = forWholeFile(s, statistics);
         GridGeometry picture = plan.pictureGeometry();
         Sun.Lighting lighting = lighting(picture, listener);
@@ -405,12 +404,12 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         String why = plan.fitsOneArray() ? "needs " + InsufficientHeapException.human(inMemoryBytes(plan, s))
                 + " at once, more than the memory budget of " + InsufficientHeapException.human(memoryBudget())
                 : "has more cells than one Java array holds";
-        listener.notice(String.format(Locale.ROOT, "the %d×%d picture %s: rendering it in %d × %d tiles of up to"
+        notices.add(String.format(Locale.ROOT, "the %d×%d picture %s: rendering it in %d × %d tiles of up to"
                 + " %d×%d pixels", plan.width(), plan.height(), why, layout.columns(plan.width()),
                 layout.rows(plan.height()), layout.tileWidth(), layout.tileHeight()));
         String stage = stageName();
         try (ImageSink sink = opener.open(picture, renderer.rgba())) {
-            new TiledWriter(files, plan, layout, renderer).write(sink, stage, listener);
+            new TiledWriter(files, plan, layout, renderer).write(sink, stage, listener, notices);
             listener.phaseDone(stage);
             return sink.commit();
         }

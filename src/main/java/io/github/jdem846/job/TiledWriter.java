@@ -8,7 +8,9 @@ import io.github.jdem846.shadow.CellWindow;
 import java.io.IOException;
 import java.io.InterruptedIOException;
 import java.nio.channels.ClosedByInterruptException;
+import java.util.ArrayList;
 import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -40,8 +42,11 @@ final class TiledWriter {
      *
      * @param stage    the progress stage's name
      * @param listener told of progress and of notices learned while reading
+     * @param notices  notices for the listener once the first tile is read (none when the read fails: its
+     *                 refusal is then all the user is told)
      */
-    void write(ImageSink sink, String stage, JobListener listener) throws IOException, InterruptedException {
+    void write(ImageSink sink, String stage, JobListener listener, List<String> notices)
+            throws IOException, InterruptedException {
         int width = plan.width();
         int height = plan.height();
         int tw = layout.tileWidth();
@@ -52,7 +57,8 @@ final class TiledWriter {
         byte[] grayBand = rgba ? null : new byte[Math.multiplyExact(width, Math.min(th, height))];
         long total = plan.pixels();
         AtomicLong reported = new AtomicLong();
-        Set<String> notices = new LinkedHashSet<>(plan.info().notices());
+        Set<String> told = new LinkedHashSet<>();
+        List<String> pending = new ArrayList<>(notices);
         long done = 0;
         for (int y0 = 0; y0 < height; y0 += th) {
             int bh = Math.min(th, height - y0);
@@ -64,11 +70,13 @@ final class TiledWriter {
                 CellWindow tile = new CellWindow(area.col() + x0, area.row() + y0, bw, bh);
                 CellWindow region = layout.region(tile, plan.gridWidth(), plan.gridHeight());
                 LoadedDem loaded = read(region);
-                for (String n : loaded.info().notices()) {
-                    if (notices.add(n)) {
+                pending.addAll(loaded.info().notices());
+                for (String n : pending) {
+                    if (told.add(n)) {
                         listener.notice(n);
                     }
                 }
+                pending.clear();
                 long before = done;
                 long pixels = (long) bw * bh;
                 RenderProgress inTile = (s, d, t) -> report(listener, stage, reported,
