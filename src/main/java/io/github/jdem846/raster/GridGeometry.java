@@ -34,6 +34,9 @@ public final class GridGeometry {
     private final CrsInfo crs;
     private final PixelAnchor declaredAnchor;
     private final Placement placement;
+    /** The origin of the root grid ({@link #placement}): cell centres are computed from it, see {@link #centerY}. */
+    private final double rootOriginX;
+    private final double rootOriginY;
     private volatile Optional<GeoLocator> locator; // derived from crs, built on first use
 
     /**
@@ -49,15 +52,17 @@ public final class GridGeometry {
     public GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
                         CrsInfo crs, PixelAnchor declaredAnchor) {
         this(width, height, originX, originY, cellWidth, cellHeight, crs, declaredAnchor,
-                new Placement(0, 0, Math.max(width, 1), Math.max(height, 1)));
+                new Placement(0, 0, Math.max(width, 1), Math.max(height, 1)), originX, originY);
     }
 
     private GridGeometry(GridGeometry g, int width, int height, double originX, double originY, Placement placement) {
-        this(width, height, originX, originY, g.cellWidth, g.cellHeight, g.crs, g.declaredAnchor, placement);
+        this(width, height, originX, originY, g.cellWidth, g.cellHeight, g.crs, g.declaredAnchor, placement,
+                g.rootOriginX, g.rootOriginY);
     }
 
     private GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
-                         CrsInfo crs, PixelAnchor declaredAnchor, Placement placement) {
+                         CrsInfo crs, PixelAnchor declaredAnchor, Placement placement, double rootOriginX,
+                         double rootOriginY) {
         if (width < 1 || height < 1) {
             throw new IllegalArgumentException("grid size must be at least 1×1, got " + width + "×" + height);
         }
@@ -77,6 +82,8 @@ public final class GridGeometry {
         this.crs = Objects.requireNonNull(crs, "crs");
         this.declaredAnchor = Objects.requireNonNull(declaredAnchor, "declaredAnchor");
         this.placement = placement;
+        this.rootOriginX = rootOriginX;
+        this.rootOriginY = rootOriginY;
     }
 
     /**
@@ -141,14 +148,21 @@ public final class GridGeometry {
         return declaredAnchor;
     }
 
-    /** World x of the centre of column {@code col} (fractional columns allowed). */
+    /**
+     * World x of the centre of column {@code col} (fractional columns allowed), computed from the root grid's
+     * origin ({@link #placement}), so that a window gives its cells exactly the root's values, bit for bit.
+     */
     public double centerX(double col) {
-        return originX + (col + 0.5) * cellWidth;
+        return rootOriginX + (placement.col() + col + 0.5) * cellWidth;
     }
 
-    /** World y of the centre of row {@code row} (fractional rows allowed). */
+    /**
+     * World y of the centre of row {@code row} (fractional rows allowed), computed from the root grid's origin as
+     * {@link #centerX} is: the per-row metric sizes of a window of a latitude/longitude grid, and what is computed
+     * from them, are those of the same rows of the root.
+     */
     public double centerY(double row) {
-        return originY - (row + 0.5) * cellHeight;
+        return rootOriginY - (placement.row() + row + 0.5) * cellHeight;
     }
 
     /** @return world x of the east edge */
@@ -180,7 +194,7 @@ public final class GridGeometry {
         return switch (crs.kind()) {
             case PROJECTED -> cellHeight * crs.linearUnitMeters();
             case GEOGRAPHIC -> {
-                double north = originY - row * cellHeight;
+                double north = rootOriginY - ((long) placement.row() + row) * cellHeight;
                 yield crs.ellipsoidOrWgs84().meridianArcLength(north, north - cellHeight);
             }
             case UNKNOWN -> cellHeight;
@@ -292,7 +306,7 @@ public final class GridGeometry {
     /** A copy with another CRS. */
     public GridGeometry withCrs(CrsInfo newCrs) {
         return new GridGeometry(width, height, originX, originY, cellWidth, cellHeight,
-                Objects.requireNonNull(newCrs, "crs"), declaredAnchor, placement);
+                Objects.requireNonNull(newCrs, "crs"), declaredAnchor, placement, rootOriginX, rootOriginY);
     }
 
     @Override
