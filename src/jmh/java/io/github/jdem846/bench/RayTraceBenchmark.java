@@ -1,14 +1,11 @@
 package io.github.jdem846.bench;
 
 import io.github.jdem846.light.LightDirection;
-import io.github.jdem846.geo.CrsInfo;
-import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.raster.Dem;
-import io.github.jdem846.raster.GridGeometry;
-import io.github.jdem846.raster.PixelAnchor;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowMask;
 import io.github.jdem846.shadow.ShadowOptions;
+import io.github.jdem846.testing.SyntheticDems;
 import java.io.IOException;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.TimeUnit;
@@ -65,10 +62,7 @@ public class RayTraceBenchmark {
      * a step length per row, the sweep's lat/lon path.
      */
     static Dem onLatLonGrid(Dem dem) {
-        double arcSecond = 1.0 / 3600;
-        GridGeometry g = new GridGeometry(dem.width(), dem.height(), -118.5, 35.0, arcSecond, arcSecond,
-                CrsInfo.geographic("WGS 84", 4326, Ellipsoid.WGS84), PixelAnchor.CORNER);
-        return new Dem(dem.backingArray(), g);
+        return SyntheticDems.geographic(dem.width(), dem.height(), -118.5, 35.0, 1.0 / 3600, dem.backingArray());
     }
 
     /** A DEM, the sun and a one-thread pool; the grid's size is the subclass's. */

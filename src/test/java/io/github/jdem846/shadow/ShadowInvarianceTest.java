@@ -29,7 +29,11 @@ class ShadowInvarianceTest {
     private static final ShadowAlgorithm[] ALGORITHMS = {ShadowAlgorithm.MARCH, ShadowAlgorithm.SWEEP,
         ShadowAlgorithm.EXACT};
     @RegisterExtension
+    static final PoolExtension ONE = new PoolExtension(1);
+    @RegisterExtension
     static final PoolExtension POOL = new PoolExtension(2);
+    @RegisterExtension
+    static final PoolExtension THREE = new PoolExtension(3);
     private static Dem bigTujunga;
     private static Dem luxembourg;
     private static Dem jacksboro;
@@ -62,17 +66,14 @@ class ShadowInvarianceTest {
                     for (LightDirection l : soft ? new LightDirection[] {new LightDirection(250, 5)}
                             : new LightDirection[] {new LightDirection(250, 5), new LightDirection(160, 20)}) {
                         float[] one = null;
-                        for (int threads : new int[] {1, 2, 3}) {
-                            ForkJoinPool p = new ForkJoinPool(threads);
-                            try {
-                                float[] m = a.compute(dem, l, o, p).backingArray();
-                                if (one == null) {
-                                    one = m;
-                                } else {
-                                    assertArrayEquals(one, m, a + " soft=" + soft + " " + l + " threads=" + threads);
-                                }
-                            } finally {
-                                p.shutdownNow();
+                        for (PoolExtension pool : new PoolExtension[] {ONE, POOL, THREE}) {
+                            ForkJoinPool p = pool.get();
+                            float[] m = a.compute(dem, l, o, p).backingArray();
+                            if (one == null) {
+                                one = m;
+                            } else {
+                                assertArrayEquals(one, m, a + " soft=" + soft + " " + l + " threads="
+                                        + p.getParallelism());
                             }
                         }
                     }
