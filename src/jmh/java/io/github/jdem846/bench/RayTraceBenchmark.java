@@ -26,15 +26,17 @@ import org.openjdk.jmh.annotations.Warmup;
 /**
  * Cast shadows of a whole DEM, sun at azimuth 300° (off the grid axes and diagonals), on a pool of one thread: the
  * score is milliseconds per whole grid, so score / cells is the cost of one ray ({@code march}, {@code exact}) or of
- * one cell ({@code sweep}). {@code exact} runs at 512² only. The DEM ({@code dem} parameter) is the seeded fractal
- * ({@link FractalDem}, seed 846, 30 m cells; the default) or {@code mirrored}: Big Tujunga SRTM 30 m mirror-tiled
+ * one cell ({@code sweep}, {@code sweepThinFeatures}, {@code sweepSoft}). {@code exact} runs at 512² only. The DEM
+ * ({@code dem} parameter) is the seeded fractal ({@link FractalDem}, seed 846, 30 m cells; the default) or
+ * {@code mirrored}: Big Tujunga SRTM 30 m mirror-tiled
  * ({@link MirroredDem}; real mountains, read from testdata, so run from the worktree root), or
  * {@code mirrored-latlon}: the same on a 1″ lat/lon grid ({@link #onLatLonGrid}), where the step length changes from
  * row to row.
  *
  * <pre>./mvnw -B -o -q -Pjmh package -DskipTests
  * java -jar target/benchmarks.jar RayTraceBenchmark -f 1 -wi 2 -i 3
- * java -jar target/benchmarks.jar 'RayTraceBenchmark.(sweep|march)' -p dem=mirrored -p size=2048 -p elevation=5</pre>
+ * java -jar target/benchmarks.jar 'RayTraceBenchmark.(sweep|march)' -p dem=mirrored -p size=2048 -p elevation=5
+ * java -jar target/benchmarks.jar 'RayTraceBenchmark.sweepSoft' -p dem=fractal,mirrored-latlon -p size=2048</pre>
  */
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
@@ -130,6 +132,15 @@ public class RayTraceBenchmark {
     @Benchmark
     public ShadowMask sweepThinFeatures(Grid g) {
         return ShadowAlgorithm.SWEEP.compute(g.grid, g.light, ShadowOptions.DEFAULTS.withThinFeatures(true), g.pool);
+    }
+
+    /**
+     * Soft shadows by the sweep ({@link ShadowOptions#withSoftShadows}): the 17 elevations across the sun's disk in
+     * one walk of the lines ({@code LevelsWalk}, uniform or lat/lon by the grid), then each cell's hidden fraction.
+     */
+    @Benchmark
+    public ShadowMask sweepSoft(Grid g) {
+        return ShadowAlgorithm.SWEEP.compute(g.grid, g.light, ShadowOptions.DEFAULTS.withSoftShadows(true), g.pool);
     }
 
     /** The reference: eighth-cell steps on the bilinear surface. */
