@@ -26,23 +26,24 @@ final class MethodNames {
 
     /** The method named {@code name} (case-insensitive), with a message listing the choices otherwise. */
     static HillshadeMethod hillshade(String name) {
-        for (HillshadeMethod m : HillshadeMethod.values()) {
-            if (of(m).equalsIgnoreCase(name == null ? "" : name.trim())) {
-                return m;
-            }
-        }
-        throw new IllegalArgumentException("unknown hillshade method '" + name
+        return named(HillshadeMethod.values(), name, "unknown hillshade method '" + name
                 + "'; choose jdem846 (default), horn or multidirectional");
     }
 
     /** The shadow algorithm named {@code name} (case-insensitive), with a message listing the choices otherwise. */
     static ShadowAlgorithm shadows(String name) {
-        for (ShadowAlgorithm a : ShadowAlgorithm.values()) {
-            if (of(a).equalsIgnoreCase(name == null ? "" : name.trim())) {
-                return a;
+        return named(ShadowAlgorithm.values(), name, "unknown shadow algorithm '" + name
+                + "'; expected one of march, sweep, exact, none");
+    }
+
+    /** The constant of {@code values} whose lower-case name is {@code name} (case-insensitive, trimmed). */
+    private static <E extends Enum<E>> E named(E[] values, String name, String unknown) {
+        String wanted = name == null ? "" : name.trim();
+        for (E e : values) {
+            if (e.name().equalsIgnoreCase(wanted)) {
+                return e;
             }
         }
-        throw new IllegalArgumentException("unknown shadow algorithm '" + name
-                + "'; expected one of march, sweep, exact, none");
+        throw new IllegalArgumentException(unknown);
     }
 }
