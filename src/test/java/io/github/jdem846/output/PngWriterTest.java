@@ -38,13 +38,7 @@ class PngWriterTest {
     private static final int H = 1000;
     private static final ShadedRelief RELIEF = SyntheticDems.shadedRelief(W, H, 21);
     @RegisterExtension
-    static final PoolExtension ONE = new PoolExtension(1);
-    @RegisterExtension
-    static final PoolExtension TWO = new PoolExtension(2);
-    @RegisterExtension
-    static final PoolExtension THREE = new PoolExtension(3);
-    @RegisterExtension
-    static final PoolExtension FIVE = new PoolExtension(5);
+    static final PoolExtension POOLS = new PoolExtension(1, 2, 3, 5);
 
     @TempDir
     Path dir;
@@ -70,8 +64,7 @@ class PngWriterTest {
                 byte[] one = encode(image, level, false);
                 String what = (image.getType() == BufferedImage.TYPE_BYTE_GRAY ? "gray" : "RGBA") + " level " + level;
                 assertArrayEquals(one, encode(image, level, true), what + ", common pool");
-                for (PoolExtension threads : new PoolExtension[] {ONE, TWO, THREE, FIVE}) {
-                    ForkJoinPool pool = threads.get();   // parallel streams run in the caller's pool
+                for (ForkJoinPool pool : POOLS.all()) {   // parallel streams run in the caller's pool
                     assertArrayEquals(one, pool.submit(() -> encode(image, level, true)).get(),
                             what + ", " + pool.getParallelism() + " threads");
                 }

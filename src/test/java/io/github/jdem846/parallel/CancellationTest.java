@@ -19,15 +19,11 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 class CancellationTest {
 
     @RegisterExtension
-    static final PoolExtension ONE = new PoolExtension(1);
-    @RegisterExtension
-    static final PoolExtension TWO = new PoolExtension(2);
-    @RegisterExtension
-    static final PoolExtension THREE = new PoolExtension(3);
+    static final PoolExtension POOLS = new PoolExtension(1, 2, 3);
 
     @Test
     void everyPartRunsOnceOnAnyPool() {
-        for (ForkJoinPool pool : new ForkJoinPool[] {ONE.get(), THREE.get(), ForkJoinPool.commonPool()}) {
+        for (ForkJoinPool pool : new ForkJoinPool[] {POOLS.get(1), POOLS.get(3), ForkJoinPool.commonPool()}) {
             for (int parts : new int[] {0, 1, 2, 7, 1000}) {
                 AtomicIntegerArray runs = new AtomicIntegerArray(parts);
                 Cancellation.invokeAll(pool, parts, (i, c) -> runs.incrementAndGet(i));
@@ -40,7 +36,7 @@ class CancellationTest {
 
     @Test
     void aWorkerOfThePoolMayCallItWithoutDeadlock() {
-        ForkJoinPool one = ONE.get();
+        ForkJoinPool one = POOLS.get(1);
         AtomicInteger runs = new AtomicInteger();
         one.submit(() -> Cancellation.invokeAll(one, 50, (i, c) -> runs.incrementAndGet())).join();
         assertEquals(50, runs.get());
@@ -51,7 +47,7 @@ class CancellationTest {
         IllegalStateException boom = new IllegalStateException("boom");
         AtomicInteger started = new AtomicInteger();
         IllegalStateException thrown = assertThrows(IllegalStateException.class,
-                () -> Cancellation.invokeAll(TWO.get(), 10_000, (i, c) -> {
+                () -> Cancellation.invokeAll(POOLS.get(2), 10_000, (i, c) -> {
                     started.incrementAndGet();
                     if (i == 3) {
                         throw boom;
@@ -77,7 +73,7 @@ class CancellationTest {
 
     @Test
     void anInterruptEndsTheCallOnlyOnceNoPartRuns() throws InterruptedException {
-        for (ForkJoinPool pool : new ForkJoinPool[] {TWO.get(), ForkJoinPool.commonPool()}) {
+        for (ForkJoinPool pool : new ForkJoinPool[] {POOLS.get(2), ForkJoinPool.commonPool()}) {
             AtomicInteger running = new AtomicInteger();
             AtomicInteger runningAtEnd = new AtomicInteger(-1);
             InterruptedRun run = InterruptedRun.of(() -> {
@@ -106,7 +102,7 @@ class CancellationTest {
 
     @Test
     void isCancelledFollowsTheCallersInterruptStatus() {
-        ForkJoinPool pool = TWO.get();
+        ForkJoinPool pool = POOLS.get(2);
         boolean[] seen = new boolean[2];
         Cancellation.invokeAll(pool, 1, (i, c) -> seen[0] = c.isCancelled());
         assertFalse(seen[0]);

@@ -37,11 +37,7 @@ class SunSweepConsistencyTest {
     private static final double[] AZIMUTHS = {0, 45, 90, 160, 250, 300, 359.999};
 
     @RegisterExtension
-    static final PoolExtension ONE = new PoolExtension(1);
-    @RegisterExtension
-    static final PoolExtension TWO = new PoolExtension(2);
-    @RegisterExtension
-    static final PoolExtension THREE = new PoolExtension(3);
+    static final PoolExtension POOLS = new PoolExtension(1, 2, 3);
 
     private static Dem real(String name) throws IOException {
         return DemReader.read(Path.of("testdata/dem/" + name + ".flt"));
@@ -78,12 +74,12 @@ class SunSweepConsistencyTest {
                 for (double a : AZIMUTHS) {
                     LightDirection light = new LightDirection(a, e);
                     for (ShadowOptions o : new ShadowOptions[] {ShadowOptions.DEFAULTS, THIN}) {
-                        float[] fast = sweep(dem, light, o, true, TWO.get());
-                        float[] reference = sweep(dem, light, o, false, ONE.get());
+                        float[] fast = sweep(dem, light, o, true, POOLS.get(2));
+                        float[] reference = sweep(dem, light, o, false, POOLS.get(1));
                         assertEquals(0, differences(fast, reference), name + " az " + a + " el " + e + " thin "
                                 + o.thinFeatures());
                     }
-                    float[] fast = sweep(dem, light, ShadowOptions.DEFAULTS, true, TWO.get());
+                    float[] fast = sweep(dem, light, ShadowOptions.DEFAULTS, true, POOLS.get(2));
                     for (float s : fast) {
                         shadowed += s >= 0.5f ? 1 : 0;
                     }
@@ -135,8 +131,8 @@ class SunSweepConsistencyTest {
 
     private static void assertLockstepEqualsLineByLine(Dem dem, LightDirection light, int t) {
         for (ShadowOptions o : new ShadowOptions[] {ShadowOptions.DEFAULTS, THIN}) {
-            float[] fast = sweep(dem, light, o, true, THREE.get());
-            float[] reference = sweep(dem, light, o, false, ONE.get());
+            float[] fast = sweep(dem, light, o, true, POOLS.get(3));
+            float[] reference = sweep(dem, light, o, false, POOLS.get(1));
             assertEquals(0, differences(fast, reference), "trial " + t + " " + light + " thin "
                     + o.thinFeatures() + " on " + dem.geometry());
         }
@@ -154,9 +150,9 @@ class SunSweepConsistencyTest {
         for (double a : new double[] {0, 45, 90, 180, 270}) {
             for (double e : new double[] {5, 20}) {
                 LightDirection light = new LightDirection(a, e);
-                ShadowMask sweep = ShadowAlgorithm.SWEEP.compute(dem, light, nearest, TWO.get());
+                ShadowMask sweep = ShadowAlgorithm.SWEEP.compute(dem, light, nearest, POOLS.get(2));
                 ShadowMask march = ShadowAlgorithm.MARCH.compute(dem, light, nearest.withStep(StepSize.ONE_CELL),
-                        TWO.get());
+                        POOLS.get(2));
                 assertEquals(0, differences(sweep.backingArray(), march.backingArray()), "az " + a + " el " + e);
                 shadowed += march.shadowedCount();
             }
@@ -171,9 +167,9 @@ class SunSweepConsistencyTest {
                 ShadowOptions.DEFAULTS.withEarthCurvature(true))) {
             for (double a : new double[] {160, 300}) {
                 LightDirection light = new LightDirection(a, 5);
-                float[] m1 = ShadowAlgorithm.SWEEP.compute(dem, light, options, ONE.get()).backingArray();
-                float[] m2 = ShadowAlgorithm.SWEEP.compute(dem, light, options, TWO.get()).backingArray();
-                float[] m3 = ShadowAlgorithm.SWEEP.compute(dem, light, options, THREE.get()).backingArray();
+                float[] m1 = ShadowAlgorithm.SWEEP.compute(dem, light, options, POOLS.get(1)).backingArray();
+                float[] m2 = ShadowAlgorithm.SWEEP.compute(dem, light, options, POOLS.get(2)).backingArray();
+                float[] m3 = ShadowAlgorithm.SWEEP.compute(dem, light, options, POOLS.get(3)).backingArray();
                 assertEquals(0, differences(m1, m2), options + " az " + a);
                 assertEquals(0, differences(m1, m3), options + " az " + a);
             }
@@ -227,13 +223,13 @@ class SunSweepConsistencyTest {
         for (int t = 0; t < 300; t++) {
             for (FileWindowCase c : FileWindowCase.random(rnd, 8)) {
                 ShadowOptions told = ShadowOptions.DEFAULTS.withTerrainMinimum(c.dem().statistics().min());
-                ForkJoinPool pool = t % 2 == 0 ? ONE.get() : TWO.get();
+                ForkJoinPool pool = t % 2 == 0 ? POOLS.get(1) : POOLS.get(2);
                 assertEquals(0, c.differences(told, pool), "trial " + t + " " + c.light() + " " + c.window());
                 if (t % 4 == 0) {
-                    assertEquals(0, c.differences(told.withThinFeatures(true), TWO.get()), "thin features, trial " + t
-                            + " " + c.light() + " " + c.window());
+                    assertEquals(0, c.differences(told.withThinFeatures(true), POOLS.get(2)), "thin features, trial "
+                            + t + " " + c.light() + " " + c.window());
                 }
-                sensitive += c.differences(ShadowOptions.DEFAULTS, ONE.get()) > 0 ? 1 : 0;
+                sensitive += c.differences(ShadowOptions.DEFAULTS, POOLS.get(1)) > 0 ? 1 : 0;
             }
         }
         assertTrue(sensitive > 0, "some trials must depend on the file's minimum");
@@ -241,14 +237,14 @@ class SunSweepConsistencyTest {
 
     private static void assertWindowsMatch(Dem dem, LightDirection light, ShadowOptions options, Random rnd,
                                            int windows, String what) {
-        ShadowMask whole = ShadowAlgorithm.SWEEP.compute(dem, light, options, TWO.get());
+        ShadowMask whole = ShadowAlgorithm.SWEEP.compute(dem, light, options, POOLS.get(2));
         int width = dem.width();
         int height = dem.height();
         for (int q = 0; q < windows; q++) {
             int w = 1 + rnd.nextInt(width);
             int h = 1 + rnd.nextInt(height);
             CellWindow window = new CellWindow(rnd.nextInt(width - w + 1), rnd.nextInt(height - h + 1), w, h);
-            ForkJoinPool pool = q % 2 == 0 ? ONE.get() : TWO.get();
+            ForkJoinPool pool = q % 2 == 0 ? POOLS.get(1) : POOLS.get(2);
             ShadowMask part = ShadowAlgorithm.SWEEP.computeWindow(dem, light, options, pool, window);
             List<String> bad = new ArrayList<>();
             for (int r = 0; r < h; r++) {
