@@ -1,0 +1,232 @@
+package io.github.jdem846.io;
+
+import static io.github.jdem846.io.DemAssertions.assertSameGeotransform;
+import static io.github.jdem846.io.DemAssertions.assertSameValues;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.testing.DemTiles;
+import io.github.jdem846.testing.DemTiles.Cut;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Several files read as one grid: tiles cut from the real DEMs of testdata/dem read back cell for cell as the DEM
+ * they were cut from, whole, through windows, decimated and in parallel bands; gaps, overlaps and files that do
+ * not fit together.
+ */
+class MosaicReadTest {
+
+    private static final Path DEM = Path.of("testdata", "dem");
+    private static final Path TUJUNGA = DEM.resolve("bigtujunga_srtm30m_utm11n.flt");
+    private static final Path JACKSBORO = DEM.resolve("jacksboro_srtm3s_wgs84.tif");
+
+    @TempDir
+    static Path tmp;
+
+    private static Dem tujunga;
+    private static List<Path> tujungaTiles;
+
+    @BeforeAll
+    static void cut() throws IOException {
+        tujunga = DemReader.read(TUJUNGA);
+        // split off the middle, SRTM-like: the western and northern tiles share a column and a row with the others
+        tujungaTiles = DemTiles.gridFloat(tujunga, DemTiles.quarters(1197, 643, 601, 322, 1), tmp, "tujunga",
+                DEM.resolve("bigtujunga_srtm30m_utm11n.prj"));
+    }
+
+    @Test
+    void fourGridFloatTilesReadAsTheDemTheyWereCutFrom() throws IOException {
+        LoadedDem mosaic = DemReader.load(DemInput.of(tujungaTiles), ReadRequest.FULL);
+        assertSameValues(tujunga, mosaic.dem(), "mosaic of 4 GridFloat tiles");
+        assertSameGeotransform(tujunga.geometry(), mosaic.dem().geometry(), 1e-12, "mosaic");
+        assertEquals(tujunga.geometry().crs().epsg(), mosaic.dem().geometry().crs().epsg());
+        DemInfo info = mosaic.info();
+        assertEquals(DemFormat.MOSAIC, info.format());
+        assertEquals(4, info.members().size());
+        assertEquals(tujungaTiles, info.members());
+        assertTrue(info.notices().stream().anyMatch(n -> n.contains("overlap") && n.contains("mean")),
+                info.notices().toString());
+        assertFalse(info.notices().stream().anyMatch(n -> n.contains("uncovered")), info.notices().toString());
+        assertEquals(SampleType.FLOAT32, info.dataType());
+    }
+
+    @Test
+    void geographicGeoTiffTilesReadAsTheDemTheyWereCutFrom() throws IOException {
+        Dem whole = DemReader.read(JACKSBORO);
+        List<Cut> cuts = DemTiles.quarters(403, 344, 200, 170, 1);
+        List<Path> tiles = DemTiles.geoTiff(whole, cuts, tmp, "jacksboro", 4326, true);
+        LoadedDem mosaic = DemReader.load(DemInput.of(tiles), ReadRequest.FULL);
+        assertSameValues(whole, mosaic.dem(), "mosaic of 4 GeoTIFF tiles");
+        assertEquals(whole.geometry().originX(), mosaic.dem().geometry().originX(), "west edge, exactly");
+        assertEquals(whole.geometry().originY(), mosaic.dem().geometry().originY(), "north edge, exactly");
+        assertEquals(whole.geometry().cellWidth(), mosaic.dem().geometry().cellWidth());
+        assertTrue(mosaic.dem().geometry().crs().isGeographic());
+        // the tiles in another order make the same grid
+        List<Path> shuffled = List.of(tiles.get(3), tiles.get(1), tiles.get(2), tiles.get(0));
+        assertSameValues(whole, DemReader.read(DemInput.of(shuffled), ReadRequest.FULL), "other order");
+    }
+
+    @Test
+    void windowsDecimationStatisticsAndParallelBandsMatchTheWholeDem() throws IOException {
+        DemInput mosaic = DemInput.of(tujungaTiles);
+        List<ReadRequest> requests = List.of(
+                ReadRequest.of(Window.cells(590, 310, 40, 30)),     // across both seams
+                ReadRequest.of(Window.cells(0, 0, 300, 200)),       // inside one tile
+                ReadRequest.of(Window.cells(601, 0, 596, 643)),     // the eastern tiles exactly
+                new ReadRequest(Window.cells(3, 5, 1190, 630), 3),  // decimated, blocks across the seams
+                new ReadRequest(null, 7));
+        for (ReadRequest r : requests) {
+            LoadedDem a = DemReader.load(DemInput.of(TUJUNGA), r);
+            LoadedDem b = DemReader.load(mosaic, r);
+            assertSameValues(a.dem(), b.dem(), r.toString());
+            assertSameGeotransform(a.dem().geometry(), b.dem().geometry(), 1e-12, r.toString());
+            assertEquals(a.sourceStatistics(), b.sourceStatistics(), r.toString());
+        }
+        ElevationStatistics whole = DemReader.statistics(TUJUNGA);
+        assertEquals(whole, DemReader.statistics(mosaic));
+        // in two bands at once, each through a mosaic of its own
+        LoadedDem parallel = DemReader.load(mosaic, ReadRequest.FULL, 2, 1000);
+        assertSameValues(tujunga, parallel.dem(), "two parallel bands");
+        assertEquals(whole, DemReader.statistics(mosaic, 2, 1000));
+    }
+
+    @Test
+    void aMissingTileIsAGapOfNoData() throws IOException {
+        List<Path> three = List.of(tujungaTiles.get(0), tujungaTiles.get(1), tujungaTiles.get(2));
+        LoadedDem m = DemReader.load(DemInput.of(three), ReadRequest.FULL);
+        assertEquals(1197, m.dem().width());
+        assertEquals(643, m.dem().height());
+        long gap = 0;
+        for (int r = 0; r < 643; r++) {
+            for (int c = 0; c < 1197; c++) {
+                boolean inGap = c >= 602 && r >= 323; // the south-east tile less the shared column and row
+                float v = m.dem().get(c, r);
+                if (inGap) {
+                    assertTrue(Float.isNaN(v), "gap at " + c + "," + r);
+                    gap++;
+                } else {
+                    assertEquals(tujunga.get(c, r), v, "cell " + c + "," + r);
+                }
+            }
+        }
+        long expected = (1197L - 602) * (643 - 323);
+        assertEquals(expected, gap);
+        assertTrue(m.info().notices().contains("the files leave " + expected + " cells of the grid uncovered: they"
+                + " read as no-data"), m.info().notices().toString());
+        assertEquals(expected, m.sourceStatistics().noDataCount());
+    }
+
+    @Test
+    void overlappingCellsAreTheMeanOfTheValidValues() throws IOException {
+        // two tiles sharing 3 columns: the eastern one 2 m higher there, and with a hole of no-data
+        Cut west = new Cut(0, 0, 103, 50);
+        Cut east = new Cut(100, 0, 100, 50);
+        float[] w = DemTiles.cells(tujunga, west);
+        float[] e = DemTiles.cells(tujunga, east);
+        for (int i = 0; i < e.length; i++) {
+            e[i] += 2;
+        }
+        e[10 * 100 + 1] = DemTiles.NO_DATA;            // (101, 10): only the western value is valid
+        w[20 * 103 + 102] = DemTiles.NO_DATA;          // (102, 20): only the eastern value is valid
+        Path a = tmp.resolve("mean_a.flt");
+        Path b = tmp.resolve("mean_b.flt");
+        DemTiles.writeGridFloat(a, w, tujunga.geometry(), west, null);
+        DemTiles.writeGridFloat(b, e, tujunga.geometry(), east, null);
+        Dem m = DemReader.read(DemInput.of(List.of(a, b)), ReadRequest.FULL);
+        assertEquals(200, m.width());
+        for (int r = 0; r < 50; r++) {
+            for (int c = 0; c < 200; c++) {
+                float v = tujunga.get(c, r);
+                float expected = c < 100 ? v : c >= 103 ? v + 2 : (float) (((double) v + (v + 2)) / 2);
+                if (c == 101 && r == 10) {
+                    expected = v;
+                } else if (c == 102 && r == 20) {
+                    expected = v + 2;
+                }
+                assertEquals(expected, m.get(c, r), "cell " + c + "," + r);
+            }
+        }
+    }
+
+    @Test
+    void aFileGivenTwiceIsReadOnceAndAHeaderStandsForItsData() throws IOException {
+        List<Path> files = new ArrayList<>(tujungaTiles);
+        files.add(DemTiles.sibling(tujungaTiles.get(2), "hdr"));
+        DemInfo info = DemReader.inspect(DemInput.of(files));
+        assertEquals(4, info.members().size());
+        assertTrue(info.notices().stream().anyMatch(n -> n.contains("given more than once")), info.notices()
+                .toString());
+    }
+
+    @Test
+    void filesOfAMosaicAreEveryTileAndItsSidecars() throws IOException {
+        List<Path> files = DemReader.filesOf(DemInput.of(tujungaTiles));
+        assertEquals(12, files.size(), files.toString());
+        for (Path t : tujungaTiles) {
+            assertTrue(files.contains(t) && files.contains(DemTiles.sibling(t, "hdr"))
+                    && files.contains(DemTiles.sibling(t, "prj")), t.toString());
+        }
+    }
+
+    @Test
+    void tilesOfAnotherCrsAreRefusedNamingBothFiles() throws IOException {
+        Path other = tmp.resolve("crs");
+        Files.createDirectories(other);
+        List<Path> t = DemTiles.gridFloat(tujunga, List.of(new Cut(601, 0, 596, 323)), other, "utm10",
+                null);
+        // UTM zone 10 instead of 11: same units, same numbers, another CRS
+        Files.writeString(DemTiles.sibling(t.get(0), "prj"), Files.readString(DEM.resolve(
+                "bigtujunga_srtm30m_utm11n.prj")).replace("Zone_11N", "Zone_10N").replace("-117.0", "-123.0"));
+        DemFormatException e = assertThrows(DemFormatException.class,
+                () -> DemReader.read(DemInput.of(List.of(tujungaTiles.get(0), t.get(0))), ReadRequest.FULL));
+        String m = e.getMessage();
+        assertTrue(m.startsWith(t.get(0).toString()) && m.contains(tujungaTiles.get(0).toString())
+                && m.contains("must share one CRS"), m);
+    }
+
+    @Test
+    void tilesOfAnotherCellSizeOrOffTheGridAreRefused() throws IOException {
+        Path dir = Files.createDirectories(tmp.resolve("misfit"));
+        Cut cut = new Cut(601, 0, 596, 323);
+        Path coarse = dir.resolve("coarse.flt");
+        DemTiles.writeGridFloat(coarse, DemTiles.cells(tujunga, cut), tujunga.geometry(), cut,
+                DEM.resolve("bigtujunga_srtm30m_utm11n.prj"));
+        Path hdr = DemTiles.sibling(coarse, "hdr");
+        Files.writeString(hdr, Files.readString(hdr).replace("cellsize 30", "cellsize 90"));
+        DemFormatException e1 = assertThrows(DemFormatException.class,
+                () -> DemReader.inspect(DemInput.of(List.of(tujungaTiles.get(0), coarse))));
+        assertTrue(e1.getMessage().contains("has cells of 90 × 90, but " + tujungaTiles.get(0)
+                + " has cells of 30 × 30"), e1.getMessage());
+
+        Path shifted = dir.resolve("shifted.flt");
+        DemTiles.writeGridFloat(shifted, DemTiles.cells(tujunga, cut), tujunga.geometry().window(0, 0, 1, 1)
+                .withCrs(tujunga.geometry().crs()), cut, DEM.resolve("bigtujunga_srtm30m_utm11n.prj"));
+        Path sh = DemTiles.sibling(shifted, "hdr");
+        double xll = tujunga.geometry().originX() + 601 * 30;
+        Files.writeString(sh, Files.readString(sh).replace(DemTiles.plain(xll), DemTiles.plain(xll + 7.5)));
+        DemFormatException e2 = assertThrows(DemFormatException.class,
+                () -> DemReader.inspect(DemInput.of(List.of(tujungaTiles.get(0), shifted))));
+        assertTrue(e2.getMessage().contains("is not on the grid of " + tujungaTiles.get(0))
+                && e2.getMessage().contains("0.250 cells off"), e2.getMessage());
+
+        Path far = dir.resolve("far.flt");
+        DemTiles.writeGridFloat(far, DemTiles.cells(tujunga, cut), tujunga.geometry(), cut,
+                DEM.resolve("bigtujunga_srtm30m_utm11n.prj"));
+        Path fh = DemTiles.sibling(far, "hdr");
+        Files.writeString(fh, Files.readString(fh).replace(DemTiles.plain(xll), DemTiles.plain(xll + 30.0 * 3_000_000_000L)));
+        DemFormatException e3 = assertThrows(DemFormatException.class,
+                () -> DemReader.inspect(DemInput.of(List.of(tujungaTiles.get(0), far))));
+        assertTrue(e3.getMessage().contains("more than 2147483647 on a side"), e3.getMessage());
+    }
+}
