@@ -229,4 +229,69 @@ class MosaicReadTest {
                 () -> DemReader.inspect(DemInput.of(List.of(tujungaTiles.get(0), far))));
         assertTrue(e3.getMessage().contains("more than 2147483647 on a side"), e3.getMessage());
     }
+
+    @Test
+    void aWindowNeverOpensTheTilesOutsideIt() throws IOException {
+        // the south-east tile's header is sound but its pixels are not: a Deflate strip of garbage
+        Path dir = Files.createDirectories(tmp.resolve("corrupt"));
+        List<Path> files = new ArrayList<>(tujungaTiles.subList(0, 3));
+        Cut se = new Cut(601, 322, 596, 321);
+        Path bad = dir.resolve("se.tif");
+        var g = tujunga.geometry().window(se.col(), se.row(), se.width(), se.height());
+        byte[] tiff = io.github.jdem846.testing.TinyTiff.int16(se.width(), se.height())
+                .data(java.util.Arrays.copyOf(new byte[] {1, 2, 3, 4, 5, 6, 7, 8}, 4096))
+                .set(258, io.github.jdem846.testing.TinyTiff.SHORT, 32)
+                .set(339, io.github.jdem846.testing.TinyTiff.SHORT, 3)
+                .set(259, io.github.jdem846.testing.TinyTiff.SHORT, 8)
+                .set(279, io.github.jdem846.testing.TinyTiff.LONG, 4096)
+                .georeferenced(g.originX(), g.originY(), 30, 30)
+                .set(34735, io.github.jdem846.testing.TinyTiff.SHORT, 1, 1, 0, 3, 1024, 0, 1, 1, 1025, 0, 1, 1,
+                        3072, 0, 1, 32611)
+                .bytes();
+        Files.write(bad, tiff);
+        files.add(bad);
+        DemInput mosaic = DemInput.of(files);
+        // the north half, across the other seam: read without touching the corrupt tile
+        ReadRequest north = ReadRequest.of(Window.cells(0, 0, 1197, 300));
+        assertSameValues(DemReader.read(TUJUNGA, north), DemReader.read(mosaic, north), "north half");
+        DemFormatException e = assertThrows(DemFormatException.class,
+                () -> DemReader.read(mosaic, ReadRequest.of(Window.cells(590, 310, 40, 30))));
+        assertTrue(e.getMessage().startsWith(bad.toString()) && e.getMessage().contains("cannot decode"),
+                e.getMessage());
+    }
+
+    @Test
+    void twoSrtmTilesShareTheirEdgeColumn() throws IOException {
+        // Jacksboro's 3" cells lie on the posts of N36W085.hgt (columns 704-1106, rows 321-664); the rest of the
+        // pair, and all of N36W084.hgt, is SRTM's no-data
+        Dem j = DemReader.read(JACKSBORO);
+        int n = 1201;
+        java.nio.ByteBuffer west = java.nio.ByteBuffer.allocate(n * n * 2);
+        java.nio.ByteBuffer east = java.nio.ByteBuffer.allocate(n * n * 2);
+        for (int r = 0; r < n; r++) {
+            for (int c = 0; c < n; c++) {
+                boolean in = c >= 704 && c < 704 + 403 && r >= 321 && r < 321 + 344;
+                west.putShort((short) (in ? j.get(c - 704, r - 321) : -32768));
+                east.putShort((short) -32768);
+            }
+        }
+        Path dir = Files.createDirectories(tmp.resolve("srtm"));
+        Path w = Files.write(dir.resolve("N36W085.hgt"), west.array());
+        Path e = Files.write(dir.resolve("N36W084.hgt"), east.array());
+        LoadedDem pair = DemReader.load(DemInput.of(List.of(e, w)), ReadRequest.FULL);
+        var g = pair.dem().geometry();
+        assertEquals(2401, g.width(), "two tiles of 1201 posts sharing one column");
+        assertEquals(1201, g.height());
+        double cell = 1.0 / 1200;
+        assertEquals(-85 - cell / 2, g.originX(), 1e-12);
+        assertEquals(-83 + cell / 2, g.eastX(), 1e-12);
+        assertEquals(37 + cell / 2, g.originY(), 1e-12);
+        assertEquals(DemFormat.MOSAIC, pair.info().format());
+        assertEquals(SampleType.INT16, pair.info().dataType());
+        assertEquals(j.statistics().validCount(), pair.sourceStatistics().validCount());
+        Window box = new Window.World(j.geometry().originX(), j.geometry().southY(), j.geometry().eastX(),
+                j.geometry().originY());
+        Dem read = DemReader.read(DemInput.of(List.of(w, e)), ReadRequest.of(box));
+        assertSameValues(j, read, "Jacksboro's box of the pair");
+    }
 }
