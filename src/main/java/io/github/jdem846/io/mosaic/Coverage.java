@@ -10,9 +10,10 @@ import java.util.TreeSet;
  * once from the placements (x-slabs, each a union of row intervals), without touching any cell.
  *
  * @param coveredCells cells covered by at least one file
+ * @param maxDepth     the most files covering one cell
  * @param overlapping  for each file, true when it shares cells with another
  */
-record Coverage(long coveredCells, boolean[] overlapping) {
+record Coverage(long coveredCells, int maxDepth, boolean[] overlapping) {
 
     static Coverage of(List<Member> members) {
         boolean[] overlapping = new boolean[members.size()];
@@ -24,7 +25,8 @@ record Coverage(long coveredCells, boolean[] overlapping) {
                 }
             }
         }
-        return new Coverage(union(members), overlapping);
+        long[] union = union(members);
+        return new Coverage(union[0], (int) union[1], overlapping);
     }
 
     /** @return true when some cells are covered by more than one file */
@@ -37,7 +39,8 @@ record Coverage(long coveredCells, boolean[] overlapping) {
         return false;
     }
 
-    private static long union(List<Member> members) {
+    /** Cells covered, and the most files covering one cell. */
+    private static long[] union(List<Member> members) {
         TreeSet<Integer> xs = new TreeSet<>();
         for (Member m : members) {
             xs.add(m.col());
@@ -45,6 +48,7 @@ record Coverage(long coveredCells, boolean[] overlapping) {
         }
         Integer[] edges = xs.toArray(new Integer[0]);
         long area = 0;
+        int depth = 0;
         List<int[]> spans = new ArrayList<>();
         for (int i = 0; i + 1 < edges.length; i++) {
             int x0 = edges[i];
@@ -71,7 +75,29 @@ record Coverage(long coveredCells, boolean[] overlapping) {
             }
             rows += end - (long) start;
             area += rows * (x1 - x0);
+            depth = Math.max(depth, depth(sorted));
         }
-        return area;
+        return new long[] {area, depth};
+    }
+
+    /** The most of the intervals (sorted by start) that hold one point. */
+    private static int depth(int[][] sorted) {
+        int[] ends = new int[sorted.length];
+        for (int i = 0; i < sorted.length; i++) {
+            ends[i] = sorted[i][1];
+        }
+        Arrays.sort(ends);
+        int most = 0;
+        int open = 0;
+        int e = 0;
+        for (int[] s : sorted) {
+            while (e < ends.length && ends[e] <= s[0]) {
+                e++;
+                open--;
+            }
+            open++;
+            most = Math.max(most, open);
+        }
+        return most;
     }
 }

@@ -76,7 +76,7 @@ public final class MosaicPlan {
         }
         DemInfo info = new DemInfo(source, format, type, 1, geometry, Double.NaN, all, files);
         return new MosaicPlan(info, list, coverage.overlapping(), rule, Objects.requireNonNull(opener, "opener"),
-                traitsOf(list, geometry.width()));
+                traitsOf(list, geometry.width(), Math.max(1, coverage.maxDepth())));
     }
 
     /** The header of the mosaic: no-data is NaN (each file's own no-data and the gaps read as NaN). */
@@ -149,9 +149,9 @@ public final class MosaicPlan {
     /**
      * How the mosaic likes to be read: in row blocks common to every file when their blocks line up on the grid
      * (else row by row), by bands of about the files' preferred size (at most 4 M cells), with room for one file's
-     * strips or tiles and the mosaic's own buffers; in independent row bands when every file can be.
+     * strips or tiles and the cells of every file under a band; in independent row bands when every file can be.
      */
-    private static ReadTraits traitsOf(List<Member> members, int width) {
+    private static ReadTraits traitsOf(List<Member> members, int width, int depth) {
         long block = 1;
         boolean independent = true;
         long memberBlockBytes = 0;
@@ -173,8 +173,8 @@ public final class MosaicPlan {
             }
         }
         long band = Math.max(bandCells, (long) width * block);
-        // per cell of a band: the file's piece (float), and for overlaps a sum (double) and a count (int)
-        long scratch = io.github.jdem846.io.source.MemoryGuard.saturatedMultiply(band, 16);
+        // per cell of a band: a float from each file covering it
+        long scratch = io.github.jdem846.io.source.MemoryGuard.saturatedMultiply(band, 4L * depth);
         return new ReadTraits((int) block, io.github.jdem846.io.source.MemoryGuard.saturatedAdd(memberBlockBytes,
                 scratch), bandCells, independent);
     }

@@ -24,9 +24,7 @@ public final class MosaicSource implements RasterSource {
     private final MosaicPlan plan;
     private final MemberPool pool;
     private final float[][] noData;
-    private float[] piece = new float[0];
-    private double[] sum = new double[0];
-    private int[] count = new int[0];
+    private float[][] pieces = new float[0][];
 
     private MosaicSource(MosaicPlan plan, int maxOpen) {
         this.plan = plan;
@@ -62,91 +60,88 @@ public final class MosaicSource implements RasterSource {
         return plan.info();
     }
 
+    /**
+     * Reads each file under the rectangle into a piece of its own and writes its valid values in file order (so the
+     * last valid value wins); under {@link OverlapRule#MEAN}, the cells two files share are then written again as
+     * the mean of every valid value there, summed in double.
+     */
     @Override
     public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
-        int n = width * rows;
-        Arrays.fill(dst, 0, n, Float.NaN);
-        List<Integer> touched = new ArrayList<>();
+        Arrays.fill(dst, 0, width * rows, Float.NaN);
         List<Member> members = plan.members();
+        List<Integer> touched = new ArrayList<>();
         for (int i = 0; i < members.size(); i++) {
             if (members.get(i).meets(col, row, width, rows)) {
                 touched.add(i);
             }
         }
-        boolean mean = plan.rule() == OverlapRule.MEAN && overlapWithin(touched, col, row, width, rows);
-        if (mean) {
-            if (sum.length < n) {
-                sum = new double[n];
-                count = new int[n];
-            }
-            Arrays.fill(sum, 0, n, 0);
-            Arrays.fill(count, 0, n, 0);
+        if (pieces.length < touched.size()) {
+            pieces = Arrays.copyOf(pieces, touched.size());
         }
-        for (int i : touched) {
+        int[][] rects = new int[touched.size()][];
+        for (int k = 0; k < touched.size(); k++) {
+            int i = touched.get(k);
             Member m = members.get(i);
             int x0 = Math.max(col, m.col());
             int y0 = Math.max(row, m.row());
             int w = Math.min(col + width, m.col() + m.width()) - x0;
             int h = Math.min(row + rows, m.row() + m.height()) - y0;
-            int cells = w * h;
-            if (piece.length < cells) {
-                piece = new float[cells];
+            rects[k] = new int[] {x0, y0, w, h};
+            if (pieces[k] == null || pieces[k].length < w * h) {
+                pieces[k] = new float[w * h];
             }
+            float[] piece = pieces[k];
             pool.get(i).readRows(m.srcCol() + x0 - m.col(), m.srcRow() + y0 - m.row(), w, h, piece);
-            toElevations(piece, cells, noData[i], m.header().scale());
+            toElevations(piece, w * h, noData[i], m.header().scale());
             for (int r = 0; r < h; r++) {
                 int at = (y0 - row + r) * width + (x0 - col);
                 int from = r * w;
-                if (mean) {
-                    for (int c = 0; c < w; c++) {
-                        float v = piece[from + c];
-                        if (v == v) {
-                            sum[at + c] += v;
-                            count[at + c]++;
-                        }
-                    }
-                } else {
-                    // one file here, or the last valid value wins
-                    for (int c = 0; c < w; c++) {
-                        float v = piece[from + c];
-                        if (v == v) {
-                            dst[at + c] = v;
-                        }
+                for (int c = 0; c < w; c++) {
+                    float v = piece[from + c];
+                    if (v == v) {
+                        dst[at + c] = v;
                     }
                 }
             }
         }
-        if (mean) {
-            for (int i = 0; i < n; i++) {
-                if (count[i] > 0) {
-                    dst[i] = (float) (sum[i] / count[i]);
-                }
-            }
+        if (plan.rule() == OverlapRule.MEAN) {
+            averageOverlaps(touched, rects, col, row, width, dst);
         }
     }
 
-    /** True when two of the touched files share cells inside the rectangle. */
-    private boolean overlapWithin(List<Integer> touched, int col, int row, int width, int rows) {
-        List<Member> members = plan.members();
+    /** Writes the cells each pair of touched files shares as the mean of the valid values of every file there. */
+    private void averageOverlaps(List<Integer> touched, int[][] rects, int col, int row, int width, float[] dst) {
         for (int a = 0; a < touched.size(); a++) {
             if (!plan.overlapping(touched.get(a))) {
                 continue;
             }
-            Member ma = members.get(touched.get(a));
             for (int b = a + 1; b < touched.size(); b++) {
-                Member mb = members.get(touched.get(b));
-                if (plan.overlapping(touched.get(b)) && ma.overlaps(mb)) {
-                    int x0 = Math.max(Math.max(ma.col(), mb.col()), col);
-                    int x1 = Math.min(Math.min(ma.col() + ma.width(), mb.col() + mb.width()), col + width);
-                    int y0 = Math.max(Math.max(ma.row(), mb.row()), row);
-                    int y1 = Math.min(Math.min(ma.row() + ma.height(), mb.row() + mb.height()), row + rows);
-                    if (x0 < x1 && y0 < y1) {
-                        return true;
+                if (!plan.overlapping(touched.get(b))) {
+                    continue;
+                }
+                int x0 = Math.max(rects[a][0], rects[b][0]);
+                int x1 = Math.min(rects[a][0] + rects[a][2], rects[b][0] + rects[b][2]);
+                int y0 = Math.max(rects[a][1], rects[b][1]);
+                int y1 = Math.min(rects[a][1] + rects[a][3], rects[b][1] + rects[b][3]);
+                for (int y = y0; y < y1; y++) {
+                    for (int x = x0; x < x1; x++) {
+                        double sum = 0;
+                        int count = 0;
+                        for (int k = 0; k < touched.size(); k++) {
+                            int[] r = rects[k];
+                            if (x >= r[0] && x < r[0] + r[2] && y >= r[1] && y < r[1] + r[3]) {
+                                float v = pieces[k][(y - r[1]) * r[2] + (x - r[0])];
+                                if (v == v) {
+                                    sum += v;
+                                    count++;
+                                }
+                            }
+                        }
+                        dst[(y - row) * width + (x - col)] = count > 0 ? (float) (sum / count) : Float.NaN;
                     }
                 }
             }
         }
-        return false;
     }
 
     /** The file's no-data values to NaN, then its value scale, in place. */
@@ -176,7 +171,7 @@ public final class MosaicSource implements RasterSource {
         return plan.traits().bandCells();
     }
 
-    /** One file's strips or tiles at a time, and the mosaic's own buffers for a band. */
+    /** One file's strips or tiles at a time, and the cells of every file under a band. */
     @Override
     public long blockBytes() {
         return plan.traits().blockBytes();
