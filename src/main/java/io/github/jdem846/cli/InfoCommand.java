@@ -25,7 +25,8 @@ import picocli.CommandLine.Parameters;
 /**
  * {@code jdem846 info [FILE...] [--json]}: format, size, data type, CRS, extent (native and latitude/longitude),
  * cell size (native and metres), no-data and elevation range of a DEM file, or of the bundled sample when no
- * FILE is given; of several files, the mosaic they make, with the list of files. Elevations are streamed, so files larger than the heap can be described.
+ * FILE is given; of several files, the mosaic they make, with the list of files. Elevations are streamed, so files
+ * larger than the heap can be described.
  */
 @Command(name = "info",
         mixinStandardHelpOptions = true,

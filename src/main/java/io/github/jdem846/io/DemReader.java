@@ -251,7 +251,8 @@ public final class DemReader {
 
     /**
      * The existing files a read of {@code file} opens: the data file first, then its header and {@code .prj} for
-     * the ESRI formats; for a {@code .vrt}, the VRT and then those of each of its sources. An output must not be written over any of them; see
+     * the ESRI formats; for a {@code .vrt}, the VRT and then those of each of its sources. An output must not be
+     * written over any of them; see
      * {@link io.github.jdem846.output.InputProtection}.
      *
      * @param file the DEM file

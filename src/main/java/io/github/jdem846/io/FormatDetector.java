@@ -88,8 +88,8 @@ final class FormatDetector {
                     + " with 'ncols'");
         }
         throw new DemFormatException(file, "is not a DEM format this program reads: expected GeoTIFF (.tif),"
-                + " ESRI GridFloat (.flt + .hdr), ESRI ASCII grid (.asc), ESRI BIL (.bil + .hdr), SRTM (.hgt) or a GDAL VRT"
-                + " (.vrt)");
+                + " ESRI GridFloat (.flt + .hdr), ESRI ASCII grid (.asc), ESRI BIL (.bil + .hdr), SRTM (.hgt) or a"
+                + " GDAL VRT (.vrt)");
     }
 
     private static byte[] head(Path file) throws DemFormatException {

@@ -8,7 +8,8 @@ import java.util.List;
 
 /**
  * The files a read of a DEM opens: the data file, and for the ESRI family its {@code .hdr} and {@code .prj} where
- * they exist; for a GDAL {@code .vrt}, the VRT and those of its sources. A writer must replace none of them ({@code io.github.jdem846.output.InputProtection}).
+ * they exist; for a GDAL {@code .vrt}, the VRT and those of its sources. A writer must replace none of them
+ * ({@code io.github.jdem846.output.InputProtection}).
  */
 final class InputFiles {
 

@@ -224,7 +224,8 @@ class MosaicReadTest {
         DemTiles.writeGridFloat(far, DemTiles.cells(tujunga, cut), tujunga.geometry(), cut,
                 DEM.resolve("bigtujunga_srtm30m_utm11n.prj"));
         Path fh = DemTiles.sibling(far, "hdr");
-        Files.writeString(fh, Files.readString(fh).replace(DemTiles.plain(xll), DemTiles.plain(xll + 30.0 * 3_000_000_000L)));
+        String farWest = DemTiles.plain(xll + 30.0 * 3_000_000_000L); // 3·10⁹ cells east: past the int range
+        Files.writeString(fh, Files.readString(fh).replace(DemTiles.plain(xll), farWest));
         DemFormatException e3 = assertThrows(DemFormatException.class,
                 () -> DemReader.inspect(DemInput.of(List.of(tujungaTiles.get(0), far))));
         assertTrue(e3.getMessage().contains("more than 2147483647 on a side"), e3.getMessage());

@@ -68,10 +68,8 @@ class VrtReadTest {
             sb.append("    <").append(kind).append(">\n      <SourceFilename relativeToVRT=\"1\">tiles/")
                     .append(tiles.get(i).getFileName()).append("</SourceFilename>\n")
                     .append("      <SourceBand>1</SourceBand>\n")
-                    .append(String.format(Locale.ROOT, "      <SrcRect xOff=\"0\" yOff=\"0\" xSize=\"%d\" ySize=\"%d\"/>%n",
-                            c.width(), c.height()))
-                    .append(String.format(Locale.ROOT, "      <DstRect xOff=\"%d\" yOff=\"%d\" xSize=\"%d\" ySize=\"%d\"/>%n",
-                            c.col(), c.row(), c.width(), c.height()));
+                    .append(rect("SrcRect", 0, 0, c.width(), c.height()))
+                    .append(rect("DstRect", c.col(), c.row(), c.width(), c.height()));
             if (kind.equals("ComplexSource")) {
                 sb.append("      <NODATA>-9999</NODATA>\n");
             }
@@ -82,6 +80,11 @@ class VrtReadTest {
         }
         sb.append("  </VRTRasterBand>\n</VRTDataset>\n");
         return sb.toString();
+    }
+
+    private static String rect(String tag, int x, int y, int w, int h) {
+        return String.format(Locale.ROOT, "      <%s xOff=\"%d\" yOff=\"%d\" xSize=\"%d\" ySize=\"%d\"/>%n",
+                tag, x, y, w, h);
     }
 
     private static Path write(String name, String xml) throws IOException {
@@ -189,7 +192,8 @@ class VrtReadTest {
         "scaling | | <ScaleRatio>2</ScaleRatio> | scales values",
         "lookup table | | <LUT>0:0,1000:10</LUT> | has <LUT>",
         "band 2 | | <SourceBand>2</SourceBand> | reads band 2",
-        "kernel filter | <KernelFilteredSource><SourceFilename>x.tif</SourceFilename></KernelFilteredSource> | | KernelFilteredSource",
+        "kernel filter | <KernelFilteredSource><SourceFilename>x.tif</SourceFilename></KernelFilteredSource> | |"
+            + " KernelFilteredSource",
         "band scale | <Scale>0.1</Scale> | | <Scale>0.1</Scale>",
         "pixel function | <PixelFunctionType>sum</PixelFunctionType> | | pixel function"})
     void unsupportedFeaturesAreRefusedByName(String what, String band, String source, String expected)
