@@ -13,7 +13,8 @@ import io.github.jdem846.sun.Observer;
 import io.github.jdem846.sun.SunLightField;
 import io.github.jdem846.sun.SunPosition;
 import io.github.jdem846.sun.ZonedTimeParser;
-import java.nio.file.Path;
+import io.github.jdem846.io.DemInput;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -22,9 +23,10 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /**
- * {@code jdem846 info [FILE] [--json]}: format, size, data type, CRS, extent (native and latitude/longitude),
+ * {@code jdem846 info [FILE...] [--json]}: format, size, data type, CRS, extent (native and latitude/longitude),
  * cell size (native and metres), no-data and elevation range of a DEM file, or of the bundled sample when no
- * FILE is given. Elevations are streamed, so files larger than the heap can be described.
+ * FILE is given; of several files, the mosaic they make, with the list of files. Elevations are streamed, so files
+ * larger than the heap can be described.
  */
 @Command(name = "info",
         mixinStandardHelpOptions = true,
@@ -34,10 +36,11 @@ import picocli.CommandLine.Parameters;
         exitCodeList = {"0:described", "1:the file cannot be read (the message says why)", "2:bad usage"})
 public final class InfoCommand implements Callable<Integer> {
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE",
-            description = "GeoTIFF, ESRI GridFloat (.flt), ESRI ASCII grid (.asc), ESRI BIL (.bil) or SRTM .hgt;"
-                    + " the bundled sample DEM when omitted.")
-    Path file;
+    @Parameters(arity = "0..*", paramLabel = "FILE",
+            description = "GeoTIFF, ESRI GridFloat (.flt), ESRI ASCII grid (.asc), ESRI BIL (.bil), SRTM .hgt or a"
+                    + " GDAL .vrt; the bundled sample DEM when omitted. Several files, a directory or a quoted glob"
+                    + " ('tiles/*.hgt') are described as the one grid they make (a mosaic).")
+    List<String> files;
 
     @Option(names = "--json", description = "Print one JSON object instead of text.")
     boolean json;
@@ -68,18 +71,22 @@ public final class InfoCommand implements Callable<Integer> {
         Body body = sunTime != null ? bodyOptions.bodyForSunByTime() : bodyOptions.body();
         DemInfo info;
         ElevationStatistics stats;
-        if (file == null) {
+        InputPaths.Resolved resolved = InputPaths.resolve(spec, files);
+        for (String note : resolved.notes()) {
+            spec.commandLine().getErr().println("jdem846: note: " + note);
+        }
+        DemInput input = resolved.input();
+        if (input == null) {
             LoadedDem sample = DemReader.loadSample(ReadRequest.FULL);
             info = sample.info();
             stats = sample.dem().statistics();
         } else {
-            info = DemReader.inspect(file);
-            stats = DemReader.statistics(file);
+            info = DemReader.inspect(input);
+            stats = DemReader.statistics(input);
         }
         CrsInfo crs = CrsResolver.complete(info.geometry().crs());
         if (crs != info.geometry().crs()) {
-            info = new DemInfo(info.source(), info.format(), info.dataType(), info.bands(),
-                    info.geometry().withCrs(crs), info.declaredNoData(), info.notices());
+            info = info.withGeometry(info.geometry().withCrs(crs));
         }
         info = info.withDefaultEllipsoid(body.ellipsoid());
         SunPosition sun = null;

@@ -48,8 +48,19 @@ final class InfoReport {
     String toText() {
         CrsInfo crs = g.crs();
         StringBuilder sb = new StringBuilder();
-        line(sb, "File", info.source());
-        line(sb, "Format", info.format().displayName());
+        if (info.isMosaic()) {
+            if (info.format() == io.github.jdem846.io.DemFormat.VRT) {
+                line(sb, "File", info.source());
+            }
+            line(sb, "Format", info.format().displayName() + " of " + info.members().size()
+                    + (info.members().size() == 1 ? " file" : " files") + " read as one grid");
+            for (int i = 0; i < info.members().size(); i++) {
+                line(sb, i == 0 ? "Files" : "", info.members().get(i).toString());
+            }
+        } else {
+            line(sb, "File", info.source());
+            line(sb, "Format", info.format().displayName());
+        }
         line(sb, "Size", g.width() + " × " + g.height() + " cells" + (info.bands() > 1 ? ", " + info.bands()
                 + " bands (band 1 read)" : ""));
         line(sb, "Data type", info.dataType().displayName());
@@ -105,6 +116,8 @@ final class InfoReport {
         Json j = new Json()
                 .string("file", info.source())
                 .string("format", info.format().displayName())
+                .strings("files", info.isMosaic() ? info.members().stream().map(Object::toString).toList()
+                        : java.util.List.of(info.source()))
                 .integer("width", (long) g.width())
                 .integer("height", (long) g.height())
                 .integer("bands", (long) info.bands())
@@ -158,7 +171,7 @@ final class InfoReport {
     }
 
     private static void line(StringBuilder sb, String label, String value) {
-        sb.append(String.format(Locale.ROOT, "%-15s %s%n", label + ":", value));
+        sb.append(String.format(Locale.ROOT, "%-15s %s%n", label.isEmpty() ? "" : label + ":", value));
     }
 
     /** A number with up to 12 significant digits, without trailing zeros. */

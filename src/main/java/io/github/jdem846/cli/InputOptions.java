@@ -5,7 +5,9 @@ import io.github.jdem846.job.Product;
 import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.raster.GridRequestException;
 import io.github.jdem846.render.OutputSize;
-import java.nio.file.Path;
+import io.github.jdem846.io.DemInput;
+import java.io.IOException;
+import java.util.List;
 import picocli.CommandLine;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -14,15 +16,20 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * The DEM to draw and which part of it at what size: {@code [FILE] --window --width --height --scale}. Without FILE
- * the bundled sample DEM is used.
+ * The DEM to draw and which part of it at what size: {@code [FILE...] --window --width --height --scale}. Without
+ * FILE the bundled sample DEM is used; several files, a directory or a glob pattern are read as one grid
+ * ({@link InputPaths}).
  */
 public final class InputOptions {
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE",
-            description = "GeoTIFF, GridFloat (.flt), ESRI ASCII (.asc), BIL (.bil) or SRTM .hgt; the bundled "
-                    + "sample DEM (Big Tujunga, California) when omitted.")
-    Path file;
+    @Parameters(arity = "0..*", paramLabel = "FILE",
+            description = "GeoTIFF, GridFloat (.flt), ESRI ASCII (.asc), BIL (.bil), SRTM .hgt or a GDAL .vrt; the "
+                    + "bundled sample DEM (Big Tujunga, California) when omitted. Several files, a directory (its "
+                    + "DEM files) or a quoted glob such as 'tiles/*.hgt' are read as one grid, a mosaic: one CRS, "
+                    + "one cell size, one grid; gaps are no-data, overlapping cells the mean of the files.")
+    List<String> files;
+
+    private InputPaths.Resolved resolved;
 
     @Mixin
     BodyOptions bodyOptions;
@@ -91,8 +98,9 @@ public final class InputOptions {
      * A job for {@code product} of the DEM named (or the bundled sample), with the window, size and body of these
      * options.
      */
-    ReliefJob job(Product product) {
-        return (file != null ? ReliefJob.of(file) : ReliefJob.ofSample()).withProduct(product).withWindow(window)
+    ReliefJob job(Product product) throws IOException {
+        DemInput in = input();
+        return (in != null ? ReliefJob.of(in) : ReliefJob.ofSample()).withProduct(product).withWindow(window)
                 .withSize(size()).withBody(body());
     }
 
@@ -113,8 +121,18 @@ public final class InputOptions {
         return bodyOptions.body();
     }
 
-    /** The DEM file named, or {@code null} for the sample. */
-    Path file() {
-        return file;
+    /**
+     * The DEM file or files named (directories and glob patterns resolved, once; how they were found is said on
+     * stderr), or {@code null} for the sample.
+     */
+    DemInput input() throws IOException {
+        if (resolved == null) {
+            resolved = InputPaths.resolve(command, files);
+            for (String note : resolved.notes()) {
+                command.commandLine().getErr().println("jdem846: note: " + note);
+            }
+            command.commandLine().getErr().flush();
+        }
+        return resolved.input();
     }
 }

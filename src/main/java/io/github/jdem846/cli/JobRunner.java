@@ -53,7 +53,7 @@ final class JobRunner {
         ReliefJob warmUpJob = job.withExecution(new RenderSettings(1, 64)).withWindow(null)
                 .withSize(io.github.jdem846.render.OutputSize.FULL)
                 .withSun(job.sun().byTime() ? Sun.fixed(300, 10) : job.sun());
-        KernelWarmUp warmUp = KernelWarmUp.start(dem -> warmUpJob.run(dem, JobListener.NONE), input.file());
+        KernelWarmUp warmUp = KernelWarmUp.start(dem -> warmUpJob.run(dem, JobListener.NONE), input.input());
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
             job.runAndWrite(output.path(), options, new JobListener() {
                 @Override

@@ -1,6 +1,7 @@
 package io.github.jdem846.cli;
 
 import io.github.jdem846.geo.CrsInfo;
+import io.github.jdem846.io.DemInput;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
@@ -37,7 +38,7 @@ final class KernelWarmUp {
      * Starts warming {@code stage} up on a grid of {@code input}'s kind (null = the bundled sample, projected) and
      * returns at once.
      */
-    static KernelWarmUp start(Stage stage, Path input) {
+    static KernelWarmUp start(Stage stage, DemInput input) {
         KernelWarmUp warmUp = new KernelWarmUp();
         WarmUpThread.start("jdem846-kernel-warm-up", () -> warmUp.run(stage, input));
         return warmUp;
@@ -48,8 +49,8 @@ final class KernelWarmUp {
         stopped.set(true);
     }
 
-    private void run(Stage stage, Path input) {
-        Dem dem = syntheticHills(geometryLike(input));
+    private void run(Stage stage, DemInput input) {
+        Dem dem = syntheticHills(geometryOfKind(input));
         long start = System.nanoTime();
         try {
             for (int round = 0; round < MAX_ROUNDS && !stopped.get()
@@ -66,6 +67,11 @@ final class KernelWarmUp {
      * geographic, else metric (also when the header cannot be read: the command reports that itself).
      */
     static GridGeometry geometryLike(Path input) {
+        return geometryOfKind(input == null ? null : DemInput.of(input));
+    }
+
+    /** As {@link #geometryLike(Path)} for one file or a mosaic. */
+    static GridGeometry geometryOfKind(DemInput input) {
         if (input != null) {
             try {
                 GridGeometry g = DemReader.inspect(input).geometry();

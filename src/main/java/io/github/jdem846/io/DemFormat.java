@@ -11,7 +11,17 @@ public enum DemFormat {
     /** ESRI band-interleaved-by-line raw raster ({@code .bil} + {@code .hdr}), 16-bit as jDem846 read it. */
     BIL("ESRI BIL"),
     /** SRTM height tile ({@code N34W118.hgt}): big-endian int16, 1″ or 3″, extent from the file name. */
-    SRTM_HGT("SRTM HGT");
+    SRTM_HGT("SRTM HGT"),
+    /**
+     * Several DEM files read as one grid: tiles of one CRS and cell size on one grid, gaps read as no-data,
+     * overlapping cells averaged (docs/formats.md, "Mosaics").
+     */
+    MOSAIC("mosaic"),
+    /**
+     * A GDAL virtual raster ({@code .vrt}): an XML file that places tiles of the formats above on one grid, the
+     * last source winning where they overlap (docs/formats.md, "Mosaics").
+     */
+    VRT("GDAL VRT");
 
     private final String displayName;
 

@@ -5,7 +5,9 @@ import java.util.List;
 import java.util.Objects;
 
 /**
- * What a render reads as one grid: one DEM file, or several files read together as a mosaic.
+ * What a render reads as one grid: one DEM file, or several files read together as a mosaic (one CRS, one cell
+ * size, one grid; gaps are no-data, overlapping cells the mean of the files' valid values; see
+ * {@link DemReader}).
  *
  * @param files the DEM files, at least one; a {@code .hdr} stands for its data file
  */

@@ -4,6 +4,9 @@ import io.github.jdem846.io.esri.BilFormat;
 import io.github.jdem846.io.esri.EsriAsciiSource;
 import io.github.jdem846.io.esri.GridFloatFormat;
 import io.github.jdem846.io.geotiff.GeoTiffSource;
+import io.github.jdem846.io.mosaic.MosaicPlanner;
+import io.github.jdem846.io.mosaic.MosaicSource;
+import io.github.jdem846.io.mosaic.VrtReader;
 import io.github.jdem846.io.source.BlockReader;
 import io.github.jdem846.io.source.HgtFormat;
 import io.github.jdem846.io.source.MemoryGuard;
@@ -22,6 +25,11 @@ import java.util.Objects;
  * The one entry point for reading DEM files: GeoTIFF, ESRI GridFloat, ESRI ASCII grid, ESRI BIL and SRTM HGT,
  * recognised from their content and extension. A read may be limited to a window and decimated by box
  * averaging; only the part of the file needed is decoded where the format allows (TIFF strips/tiles, raw rows).
+ *
+ * <p>Several files ({@link DemInput} of more than one file) or a GDAL {@code .vrt} are read as one grid, a mosaic:
+ * the files must share one CRS, one cell size and one grid; cells no file covers are no-data; overlapping cells
+ * are the mean of the files' valid values (a list) or the last source's valid value (a VRT, as in GDAL). A read
+ * opens only the files its window touches (docs/formats.md, "Mosaics").
  *
  * <p>Every failure is a {@link DemFormatException} whose message names the file and the problem. A grid, or a
  * read buffer, that would not fit in the heap is refused before its array is allocated; a FIFO or device is
@@ -58,6 +66,19 @@ public final class DemReader {
      */
     public static Dem read(Path file, ReadRequest request) throws IOException {
         return load(file, request).dem();
+    }
+
+    /**
+     * Reads the window and decimation of {@code request} of one file or a mosaic.
+     *
+     * @param input   the DEM file or files
+     * @param request the window, the decimation and the memory limit
+     * @return the grid read, no-data as NaN
+     * @throws IOException              naming the file when it cannot be read
+     * @throws IllegalArgumentException when the window lies outside the grid (the message gives its size)
+     */
+    public static Dem read(DemInput input, ReadRequest request) throws IOException {
+        return load(input, request).dem();
     }
 
     /**
@@ -185,7 +206,7 @@ public final class DemReader {
                 Window.Cells part = new Window.Cells(cells.col(), cells.row() + row0, cells.width(),
                         Math.min(rowsPerPart, cells.height() - row0));
                 others.add(pool.submit(() -> {
-                    try (RasterSource own = open(input)) {
+                    try (RasterSource own = reopen(first, input)) {
                         return reader.read(own, part, row0 / d);
                     }
                 }));
@@ -230,7 +251,8 @@ public final class DemReader {
 
     /**
      * The existing files a read of {@code file} opens: the data file first, then its header and {@code .prj} for
-     * the ESRI formats. An output must not be written over any of them; see
+     * the ESRI formats; for a {@code .vrt}, the VRT and then those of each of its sources. An output must not be
+     * written over any of them; see
      * {@link io.github.jdem846.output.InputProtection}.
      *
      * @param file the DEM file
@@ -366,8 +388,21 @@ public final class DemReader {
         if (input.isSingleFile()) {
             return open(input.first());
         }
-        throw new DemFormatException(input.first(), "is one of " + input.files().size()
-                + " files: reading several files as one grid is not supported yet");
+        return MosaicSource.open(MosaicPlanner.plan(input.files(), DemReader::open));
+    }
+
+    /** Another reader of what {@code source} reads, for a band read on another thread. */
+    private static RasterSource reopen(RasterSource source, DemInput input) throws IOException {
+        return source instanceof MosaicSource mosaic ? mosaic.reopen() : open(input);
+    }
+
+    /** Opens a source of a VRT: any format but a VRT (a VRT of VRTs is not read). */
+    private static RasterSource openVrtSource(Path file) throws IOException {
+        if (FormatDetector.detect(file).format() == DemFormat.VRT) {
+            throw new DemFormatException(file, "is a VRT named as the source of another VRT; a VRT of VRTs is"
+                    + " not supported (give its files instead)");
+        }
+        return open(file);
     }
 
     /** Opens the right {@link RasterSource} for the file (package-private for tests). */
@@ -382,6 +417,8 @@ public final class DemReader {
                 case ESRI_ASCII -> EsriAsciiSource.open(data);
                 case BIL -> BilFormat.open(data);
                 case SRTM_HGT -> HgtFormat.open(data);
+                case VRT -> MosaicSource.open(VrtReader.plan(data, DemReader::openVrtSource));
+                case MOSAIC -> throw new IllegalStateException("a file is not detected as a mosaic");
             };
         } catch (DemFormatException e) {
             throw e;

@@ -10,8 +10,9 @@ import java.nio.file.Path;
 import java.util.Locale;
 
 /**
- * Which format a file is, from its first bytes (TIFF and BigTIFF magic numbers, an ASCII grid's {@code ncols})
- * and its extension ({@code .flt}, {@code .bil}, {@code .hgt}, {@code .asc}; a {@code .hdr} stands for the
+ * Which format a file is, from its first bytes (TIFF and BigTIFF magic numbers, an ASCII grid's {@code ncols}, a
+ * GDAL VRT's {@code <VRTDataset}) and its extension ({@code .flt}, {@code .bil}, {@code .hgt}, {@code .asc},
+ * {@code .vrt}; a {@code .hdr} stands for the
  * {@code .flt} or {@code .bil} beside it). Also refuses what is not a DEM file: missing, a directory, a FIFO or
  * device (before opening it, which could block), empty.
  */
@@ -54,6 +55,14 @@ final class FormatDetector {
         if (isTiff(head)) {
             return new Detected(DemFormat.GEOTIFF, file);
         }
+        String start = new String(head, StandardCharsets.ISO_8859_1);
+        if (ext.equals("vrt") || start.contains("<VRTDataset")) {
+            if (!start.stripLeading().startsWith("<") && !start.startsWith("\u00ef\u00bb\u00bf<")) {
+                throw new DemFormatException(file, "is named .vrt but is not a GDAL VRT: it is not XML"
+                        + " (a VRT starts with <VRTDataset)");
+            }
+            return new Detected(DemFormat.VRT, file);
+        }
         switch (ext) {
             case "tif", "tiff", "gtif" -> throw new DemFormatException(file, "is named ." + ext
                     + " but is not a TIFF: it does not start with II*\\0, MM\\0*, II+\\0 or MM\\0+");
@@ -79,7 +88,8 @@ final class FormatDetector {
                     + " with 'ncols'");
         }
         throw new DemFormatException(file, "is not a DEM format this program reads: expected GeoTIFF (.tif),"
-                + " ESRI GridFloat (.flt + .hdr), ESRI ASCII grid (.asc), ESRI BIL (.bil + .hdr) or SRTM (.hgt)");
+                + " ESRI GridFloat (.flt + .hdr), ESRI ASCII grid (.asc), ESRI BIL (.bil + .hdr), SRTM (.hgt) or a"
+                + " GDAL VRT (.vrt)");
     }
 
     private static byte[] head(Path file) throws DemFormatException {

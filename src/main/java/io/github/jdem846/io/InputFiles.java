@@ -8,7 +8,8 @@ import java.util.List;
 
 /**
  * The files a read of a DEM opens: the data file, and for the ESRI family its {@code .hdr} and {@code .prj} where
- * they exist. A writer must replace none of them ({@code io.github.jdem846.output.InputProtection}).
+ * they exist; for a GDAL {@code .vrt}, the VRT and those of its sources. A writer must replace none of them
+ * ({@code io.github.jdem846.output.InputProtection}).
  */
 final class InputFiles {
 
@@ -35,8 +36,17 @@ final class InputFiles {
                 addIfFile(files, SidecarCrs.prjOf(data));
             }
             case ESRI_ASCII -> addIfFile(files, SidecarCrs.prjOf(data));
-            case GEOTIFF, SRTM_HGT -> {
+            case GEOTIFF, SRTM_HGT, MOSAIC -> {
                 // self-contained
+            }
+            case VRT -> {
+                for (Path source : io.github.jdem846.io.mosaic.VrtReader.sourceFiles(data)) {
+                    for (Path p : of(source)) {
+                        if (!files.contains(p)) {
+                            files.add(p);
+                        }
+                    }
+                }
             }
         }
         return List.copyOf(files);

@@ -39,7 +39,7 @@ class MainTest {
     @Test
     void helpListsTheOptionsInTheOrderTheyAreDeclared() {
         String all = CliRun.of("render", "--help").out();
-        String help = all.substring(all.indexOf("\n      [FILE]")); // the option list, not the synopsis
+        String help = all.substring(all.indexOf("\n      [FILE...]")); // the option list, not the synopsis
         String[] order = {"--window=", "--width=", "--height=", "--scale=", "--output=", "--tint=", "--hillshade=",
             "--z-factor=", "--xy-scale=", "--shadows=", "--shadow-intensity=", "--refraction=", "--sun-time=",
             "--sun-azimuth=", "--sun-elevation=", "--threads=", "--tile-size="};

@@ -98,8 +98,7 @@ public final class EsriAsciiSource implements RasterSource {
         List<String> notices = new ArrayList<>(info.notices());
         notices.add(extra + (extra == 1 ? " value" : " values") + " after the grid's nrows × ncols = "
                 + info.height() + " × " + info.width() + " were ignored (is the header's nrows or ncols too small?)");
-        info = new DemInfo(info.source(), info.format(), info.dataType(), info.bands(), info.geometry(),
-                info.declaredNoData(), notices);
+        info = info.withNotices(notices);
     }
 
     @Override

@@ -20,14 +20,15 @@ import org.xml.sax.SAXParseException;
  */
 public record ValueScale(double scale, double offset) {
 
-    static final ValueScale IDENTITY = new ValueScale(1, 0);
+    /** Elevation = raw value. */
+    public static final ValueScale IDENTITY = new ValueScale(1, 0);
 
     public boolean isIdentity() {
         return scale == 1 && offset == 0;
     }
 
     /** Unpacks {@code values[0..n)} in place (NaN stays NaN). */
-    void apply(float[] values, int n) {
+    public void apply(float[] values, int n) {
         for (int i = 0; i < n; i++) {
             values[i] = (float) (values[i] * scale + offset);
         }
