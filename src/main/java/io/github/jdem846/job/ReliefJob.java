@@ -79,6 +79,23 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     }
 
     /**
+     * A job with the automatic memory budget (half the heap's maximum).
+     *
+     * @param input     the DEM file or files, or {@code null} for the bundled sample DEM
+     * @param product   what to make
+     * @param scene     the stages and their settings
+     * @param window    the part of the DEM to draw, or {@code null} for all of it
+     * @param size      the picture's size
+     * @param sun       the light
+     * @param body      the body a DEM whose file names no ellipsoid lies on
+     * @param execution threads and tile size
+     */
+    public ReliefJob(DemInput input, Product product, Scene scene, Window window, OutputSize size, Sun sun,
+                     Body body, RenderSettings execution) {
+        this(input, product, scene, window, size, sun, body, execution, 0);
+    }
+
+    /**
      * The whole of {@code dem} as a relief picture with the original's defaults, on every processor.
      *
      * @param dem the DEM file
