@@ -6,17 +6,21 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
+import io.github.jdem846.io.DemInput;
+import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.Window;
 import io.github.jdem846.output.GeoReference;
 import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.ImageSink;
 import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.output.WriteResult;
+import io.github.jdem846.raster.Dem;
 import io.github.jdem846.render.OutputSize;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shadow.ShadowAlgorithm;
+import io.github.jdem846.testing.DemTiles;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -190,6 +194,15 @@ class TiledRenderTest {
         List<String> notices = assertTiledEqualsInMemory("low.png", low, 700_000, CHOSEN, 4);
         assertTrue(notices.toString().contains("tiles of up to 403×"), "bands: " + notices);
         assertTiledEqualsInMemory("low-columns.png", low.withProduct(Product.SHADOWS), 1, forced(8, 6), 16);
+    }
+
+    @Test
+    void aMosaicOfFourFilesRendersInTilesAsInMemory() throws Exception {
+        Dem whole = DemReader.read(JACKSBORO);
+        List<Path> quarters = DemTiles.gridFloat(whole, DemTiles.quarters(403, 344, 200, 170, 1),
+                Files.createDirectories(tmp.resolve("quarters")), "q", DemTiles.sibling(JACKSBORO, "prj"));
+        assertTiledEqualsInMemory("mosaic.png", ReliefJob.of(DemInput.of(quarters)).withScene(sweep())
+                .withSun(Sun.fixed(135, 6)), 1, forced(8, 6), 16);
     }
 
     @Test
