@@ -21,7 +21,9 @@ import java.util.Objects;
  * Reads exactly the part of a DEM file a picture needs: the window (or the whole grid) plus a halo of cells that
  * the stages read around it, at the output resolution. Shrinking reads a decimated grid (box average, only the
  * blocks needed are decoded) and finishes with an area-weighted resample to the exact size, so no stage ever runs
- * at full resolution for a smaller picture.
+ * at full resolution for a smaller picture. The read is planned from the header first ({@link #plan}); the grid
+ * planned is then loaded whole ({@link #load(DemInput, PicturePlan, boolean, FileStatistics)}) or piece by piece
+ * for a picture rendered in tiles ({@link #loadRegion}), with the same values.
  */
 final class DemLoader {
 
@@ -251,26 +253,6 @@ final class DemLoader {
                     region.width(), region.height()});
         return new LoadedDem(read0.info(), Dem.ofNormalized(values, geometry, part.declaredNoData()),
                 read0.sourceStatistics());
-    }
-
-    /**
-     * As {@link #load(Path, Window, OutputSize, Halo, boolean, Ellipsoid, int)} for the bundled sample DEM ({@link
-     * DemReader#SAMPLE_RESOURCE}), copied to a temporary file for the read and deleted after it.
-     */
-    public static Loaded loadSample(Window window, OutputSize size, Halo halo, boolean fileStatistics,
-                                    Ellipsoid body, int bytesPerPixel) throws IOException {
-        Path tmp = java.nio.file.Files.createTempFile("jdem846-sample-", ".tif");
-        try {
-            try (java.io.InputStream in = DemReader.class.getResourceAsStream(DemReader.SAMPLE_RESOURCE)) {
-                if (in == null) {
-                    throw new IOException("the bundled sample DEM is missing from the jar");
-                }
-                java.nio.file.Files.copy(in, tmp, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-            }
-            return load(tmp, window, size, halo, fileStatistics, body, bytesPerPixel);
-        } finally {
-            java.nio.file.Files.deleteIfExists(tmp);
-        }
     }
 
     /** {@link FileStatistics} of one file: streamed at most once. */

@@ -3,8 +3,11 @@ package io.github.jdem846.job;
 import java.util.Locale;
 
 /**
- * A picture that is allowed but cannot fit in this JVM's heap: refused before anything is read or allocated. The
- * message gives the picture's size, the least memory it needs and the heap's maximum.
+ * A picture that is allowed but cannot be made in this JVM's heap: refused before anything is read or allocated.
+ * In memory ({@link ReliefJob#run}): a grid and picture larger than the heap or than one Java array, which written
+ * to a file ({@link ReliefJob#runAndWrite}) are rendered in tiles instead; in tiles: a smallest tile that, with the
+ * halo its stages read around it, needs more than the memory budget. The message gives what is needed and what the
+ * heap or the budget holds.
  */
 public final class InsufficientHeapException extends RuntimeException {
 
@@ -31,6 +34,11 @@ public final class InsufficientHeapException extends RuntimeException {
      * bytesPerPixel} fit in {@code maxHeap} bytes.
      */
     static void requireFits(long cells, int width, int height, long bytesPerPixel, long maxHeap) {
+        if (cells > PicturePlan.MAX_ARRAY || (long) width * height > PicturePlan.MAX_ARRAY) {
+            throw new InsufficientHeapException("a picture of " + width + "×" + height + " pixels from " + cells
+                    + " cells has more than one Java array holds (" + PicturePlan.MAX_ARRAY + "); written to a file,"
+                    + " it is rendered in tiles");
+        }
         double need = (double) cells * Float.BYTES + (double) width * height * bytesPerPixel;
         if (need > maxHeap) {
             throw new InsufficientHeapException("a picture of " + width + "×" + height + " pixels needs at least "

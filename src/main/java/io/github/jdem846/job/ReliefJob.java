@@ -31,8 +31,9 @@ import java.util.Objects;
 /**
  * One picture of one DEM file, from file to pixels (and to a file): plans the read (the window, the halo each stage
  * needs around it, the decimation for a smaller picture), reads only that, lights the grid with the {@link Sun}
- * (fixed, or the real sun at a date and time over the cells read), renders the {@link Product} and hands it back
- * or writes it. Every command of the CLI is this job with options parsed.
+ * (fixed, or the real sun at a date and time over the picture), renders the {@link Product} and hands it back or
+ * writes it; a picture larger than the memory budget is written tile by tile ({@link #runAndWrite}). Every
+ * command of the CLI is this job with options parsed.
  *
  * <pre>{@code
  * ReliefResult relief = ReliefJob.of(Path.of("dem.tif"))
@@ -411,22 +412,13 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         Sun.Lighting lighting = lighting(picture, listener);
         int[] halo = TileHalo.of(plan, scene, statistics, lighting);
         int unit = sun.perTile() ? execution.tileSize() : RenderSettings.MIN_TILE_SIZE;
-        JobMemory needs = JobMemory.of(product, s);
-        TileLayout layout = layouts.choose(plan, halo, unit, needs, memoryBudget());
-        if (layout == null) {
-            throw InsufficientHeapException.tileTooLarge(TileLayout.sized(plan, halo, needs,
-                    Math.min(unit, plan.width()), Math.min(unit, plan.height())), memoryBudget(), scene.hasShadows());
-        }
         AreaRenderer renderer = new AreaRenderer(product, scene, lighting, execution);
-        String why = plan.fitsOneArray() ? "needs " + InsufficientHeapException.human(inMemoryBytes(plan, s))
-                + " at once, more than the memory budget of " + InsufficientHeapException.human(memoryBudget())
-                : "has more cells than one Java array holds";
-        notices.add(String.format(Locale.ROOT, "the %d×%d picture %s: rendering it in %d × %d tiles of up to"
-                + " %d×%d pixels", plan.width(), plan.height(), why, layout.columns(plan.width()),
-                layout.rows(plan.height()), layout.tileWidth(), layout.tileHeight()));
+        TiledWriter tiles = TiledWriter.plan(files, plan, renderer, halo, unit, JobMemory.of(product, s),
+                memoryBudget(), layouts, scene.hasShadows());
+        notices.add(tiles.notice(inMemoryBytes(plan, s), memoryBudget()));
         String stage = stageName();
         try (ImageSink sink = opener.open(picture, renderer.rgba())) {
-            new TiledWriter(files, plan, layout, renderer).write(sink, stage, listener, notices);
+            tiles.write(sink, stage, listener, notices);
             listener.phaseDone(stage);
             return sink.commit();
         }

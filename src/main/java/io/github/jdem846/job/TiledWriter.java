@@ -30,11 +30,50 @@ final class TiledWriter {
     private final TileLayout layout;
     private final AreaRenderer renderer;
 
-    TiledWriter(DemInput input, PicturePlan plan, TileLayout layout, AreaRenderer renderer) {
+    private TiledWriter(DemInput input, PicturePlan plan, TileLayout layout, AreaRenderer renderer) {
         this.input = input;
         this.plan = plan;
         this.layout = layout;
         this.renderer = renderer;
+    }
+
+    /**
+     * The tiles {@code layouts} cuts the picture into within {@code budget} bytes.
+     *
+     * @param files    the input
+     * @param plan     the picture
+     * @param renderer draws a tile
+     * @param halo     {west, north, east, south} grid cells a tile needs around it ({@link TileHalo})
+     * @param unit     tile sides are multiples of it (the renderer's tiles, for a sun per tile)
+     * @param needs    what the product holds
+     * @param budget   the memory budget
+     * @param layouts  the choice of tiles
+     * @param shadows  whether the halo includes cast shadows' (for the refusal's message)
+     * @throws InsufficientHeapException when not even one tile of {@code unit × unit} pixels fits
+     */
+    static TiledWriter plan(DemInput files, PicturePlan plan, AreaRenderer renderer, int[] halo, int unit,
+                            JobMemory needs, long budget, ReliefJob.LayoutChooser layouts, boolean shadows) {
+        TileLayout layout = layouts.choose(plan, halo, unit, needs, budget);
+        if (layout == null) {
+            throw InsufficientHeapException.tileTooLarge(TileLayout.sized(plan, halo, needs,
+                    Math.min(unit, plan.width()), Math.min(unit, plan.height())), budget, shadows);
+        }
+        return new TiledWriter(files, plan, layout, renderer);
+    }
+
+    /**
+     * The notice that the picture is rendered in tiles and why.
+     *
+     * @param inMemory the bytes the picture would take at once
+     * @param budget   the memory budget
+     */
+    String notice(long inMemory, long budget) {
+        String why = plan.fitsOneArray() ? "needs " + InsufficientHeapException.human(inMemory)
+                + " at once, more than the memory budget of " + InsufficientHeapException.human(budget)
+                : "has more cells than one Java array holds";
+        return String.format(java.util.Locale.ROOT, "the %d×%d picture %s: rendering it in %d × %d tiles of up to"
+                + " %d×%d pixels", plan.width(), plan.height(), why, layout.columns(plan.width()),
+                layout.rows(plan.height()), layout.tileWidth(), layout.tileHeight());
     }
 
     /**
