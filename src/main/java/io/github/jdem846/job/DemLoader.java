@@ -249,8 +249,8 @@ final class DemLoader {
         LoadedDem read0 = DemReader.load(file, new ReadRequest(Window.cells(c0, r0, c1 - c0, r1 - r0), d));
         Dem part = read0.dem();
         float[] values = DemResampler.resampleRegion(part, cols[0], rows[0], plan.decimatedWidth(),
-                plan.decimatedHeight(), plan.gridWidth(), plan.gridHeight(), new int[] {region.col(), region.row(),
-                    region.width(), region.height()});
+                plan.decimatedHeight(), plan.gridWidth(), plan.gridHeight(), region.col(), region.row(),
+                region.width(), region.height());
         return new LoadedDem(read0.info(), Dem.ofNormalized(values, geometry, part.declaredNoData()),
                 read0.sourceStatistics());
     }

@@ -27,8 +27,7 @@ public final class DemResampler {
         if (width == dem.width() && height == dem.height()) {
             return dem;
         }
-        float[] values = resampleRegion(dem, 0, 0, dem.width(), dem.height(), width, height,
-                new int[] {0, 0, width, height});
+        float[] values = resampleRegion(dem, 0, 0, dem.width(), dem.height(), width, height, 0, 0, width, height);
         return new Dem(values, resampledGeometry(dem.geometry(), width, height), dem.declaredNoData());
     }
 
@@ -49,22 +48,31 @@ public final class DemResampler {
     }
 
     /**
-     * The cells {@code region} = {col, row, width, height} of a {@code fullWidth × fullHeight} grid resampled to
+     * The cells {@code [col, col + w) × [row, row + h)} of a {@code fullWidth × fullHeight} grid resampled to
      * {@code width × height}, from a part of that grid only: {@code part} holds its cells from column {@code
      * partCol}, row {@code partRow} on. The values are those of the same cells of {@link #resample} of the whole
      * grid, bit for bit, when {@code part} covers what they read ({@link #sourceSpan}); this is how a picture too
      * large for memory is resampled piece by piece.
      *
-     * @return the region's cells, row-major
-     * @throws IllegalArgumentException when the sizes are not positive or the region is outside the output
+     * @param part       cells of the full grid
+     * @param partCol    the full grid's column of {@code part}'s first
+     * @param partRow    the full grid's row of {@code part}'s first
+     * @param fullWidth  columns of the full grid
+     * @param fullHeight rows of the full grid
+     * @param width      columns of the resampled grid
+     * @param height     rows of the resampled grid
+     * @param col        first column of the resampled grid wanted
+     * @param row        first row wanted
+     * @param w          columns wanted
+     * @param h          rows wanted
+     * @return the cells wanted, row-major
+     * @throws IllegalArgumentException when the sizes are not positive or the cells are outside the resampled grid
      */
     public static float[] resampleRegion(Dem part, int partCol, int partRow, int fullWidth, int fullHeight,
-                                         int width, int height, int[] region) {
+                                         int width, int height, int col, int row, int w, int h) {
         requireSize(width, height);
-        int c0 = region[0];
-        int r0 = region[1];
-        int w = region[2];
-        int h = region[3];
+        int c0 = col;
+        int r0 = row;
         if (c0 < 0 || r0 < 0 || w < 1 || h < 1 || (long) c0 + w > width || (long) r0 + h > height) {
             throw new IllegalArgumentException("region " + w + "×" + h + " at (" + c0 + ", " + r0
                     + ") is not inside the " + width + "×" + height + " output");
