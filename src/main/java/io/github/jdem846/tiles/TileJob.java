@@ -129,7 +129,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
             throw new IOException(info.source() + " holds no elevations (every cell is no-data)");
         }
         listener.phaseDone("read");
-        Scene lit = litScene(info, range, listener);
+        Scene lit = sceneFor(info, range, listener);
         try (TileSink sink = format == TileFormat.PMTILES ? new PmTilesSink(output) : new DirectorySink(output)) {
             PyramidRun run = new PyramidRun(this, projection, lit, range, sink, listener);
             TileReport report = run.execute(output, format);
@@ -164,7 +164,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
     }
 
     /** The scene with the light, the fade, the whole DEM's tint range and the lowest elevation for the sweep. */
-    private Scene litScene(DemInfo info, ElevationStatistics range, JobListener listener) {
+    Scene sceneFor(DemInfo info, ElevationStatistics range, JobListener listener) {
         LightDirection direction;
         double fade = 0;
         if (sun.byTime()) {
