@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.io.DemInfo;
@@ -19,6 +20,7 @@ import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.testing.TestDems;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
+import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.ByteBuffer;
@@ -29,6 +31,7 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import java.util.zip.GZIPInputStream;
@@ -40,7 +43,9 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A small pyramid (zoom 8 to 11) of the Jacksboro SRTM 3″ DEM (WGS 84, 403 × 344 cells, 84.414° to 84.078° W,
  * 36.446° to 36.733° N by gdalinfo): which tiles are written, where the data lies in them, that tiles continue across
- * their seams (shadows included), and the PMTiles archive read back by a reader written here from the spec.
+ * their seams (shadows included), the PMTiles archive read back by a reader written here from the spec, and the
+ * tiles against GDAL's ({@code gdal2tiles.py --xyz} of a {@code gdaldem hillshade} of the same DEM: the same tiles,
+ * with data in the same pixels but for a pixel's width along the DEM's outline; skipped when GDAL is not installed).
  */
 class TileJobTest {
 
@@ -67,7 +72,8 @@ class TileJobTest {
     }
 
     static TileJob job() {
-        return TileJob.of(DEM, ZOOMS).withScene(SCENE).withSun(SUN).withExecution(new RenderSettings(2, 64));
+        return TileJob.of(DEM, ZOOMS).withScene(SCENE).withSun(SUN).withExecution(new RenderSettings(2, 256))
+                .withPngCompression(1);
     }
 
     /** The wiki's formulas, independent of the code under test. */
@@ -338,5 +344,68 @@ class TileJobTest {
                 JobListener.NONE));
         assertThrows(IllegalArgumentException.class, () -> job().withScene(SCENE.withHillshadeOptions(
                 SCENE.hillshadeOptions().withHorizontalScale(111120))).run(dir.resolve("z"), JobListener.NONE));
+    }
+
+    @Test
+    void sameTilesAndSameFootprintAsGdal2tiles() throws Exception {
+        assumeTrue(onPath("gdaldem") && onPath("gdal2tiles.py"), "gdaldem and gdal2tiles.py are not installed");
+        Path work = Files.createDirectories(dir.resolve("gdal2tiles"));
+        Path hillshade = work.resolve("hs.tif");
+        run("gdaldem", "hillshade", "-q", "-compute_edges", "-s", "111120", DEM.toString(),
+                hillshade.toString());
+        Path gdal = work.resolve("tiles");
+        run("gdal2tiles.py", "--xyz", "-q", "-z", ZOOMS.min() + "-" + ZOOMS.max(), "-w",
+                "none", "--processes=1", hillshade.toString(), gdal.toString());
+        Path ours = tiles;
+        Set<String> gdalTiles = pngs(gdal);
+        assertEquals(gdalTiles, pngs(ours));
+        long oursOnly = 0;
+        long gdalOnly = 0;
+        long opaque = 0;
+        for (String t : gdalTiles) {
+            BufferedImage a = ImageIO.read(ours.resolve(t).toFile());
+            BufferedImage b = ImageIO.read(gdal.resolve(t).toFile());
+            for (int y = 0; y < 256; y++) {
+                for (int x = 0; x < 256; x++) {
+                    boolean dataA = (a.getRGB(x, y) >>> 24) > 0;
+                    boolean dataB = (b.getRGB(x, y) >>> 24) > 0;
+                    opaque += dataA ? 1 : 0;
+                    oursOnly += dataA && !dataB ? 1 : 0;
+                    gdalOnly += dataB && !dataA ? 1 : 0;
+                }
+            }
+        }
+        // the outline of the DEM at each zoom, in pixels: 2 × (width + height)
+        double outline = 0;
+        for (int z = ZOOMS.min(); z <= ZOOMS.max(); z++) {
+            outline += 2 * (column(EAST, z) - column(WEST, z) + row(SOUTH, z) - row(NORTH, z));
+        }
+        System.out.printf(java.util.Locale.ROOT, "gdal2tiles agreement: %d data pixels; only ours %d, only GDAL's"
+                + " %d, outline %.0f pixels%n", opaque, oursOnly, gdalOnly, outline);
+        assertTrue(opaque > 100000, "data pixels: " + opaque);
+        // a pixel holds data here when its centre lies on the DEM; GDAL also keeps the pixels the DEM only partly
+        // covers, a band along the outline no wider than a pixel
+        assertEquals(0, oursOnly, "pixels with data here but not in GDAL's tiles");
+        assertTrue(gdalOnly <= outline, gdalOnly + " pixels only GDAL's, along an outline of " + outline);
+    }
+
+    private static Set<String> pngs(Path root) throws IOException {
+        try (Stream<Path> s = Files.walk(root)) {
+            return s.filter(p -> p.toString().endsWith(".png")).map(p -> root.relativize(p).toString()
+                    .replace(File.separatorChar, '/')).collect(Collectors.toSet());
+        }
+    }
+
+    static boolean onPath(String program) {
+        String path = System.getenv("PATH");
+        return path != null && Stream.of(path.split(File.pathSeparator))
+                .anyMatch(d -> Files.isExecutable(Path.of(d, program)));
+    }
+
+    private static void run(String... command) throws IOException, InterruptedException {
+        Process p = new ProcessBuilder(List.of(command)).redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), String.join(" ", command) + " did not finish");
+        assertEquals(0, p.exitValue(), String.join(" ", command) + ": " + out);
     }
 }
