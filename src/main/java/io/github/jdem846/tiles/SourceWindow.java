@@ -24,14 +24,18 @@ final class SourceWindow {
     private final double east;
     private final double south;
     private final double north;
+    private final int latticeStep;
 
     /**
-     * @param dem        the cells read (decimated or not), with their geometry in the DEM's CRS
-     * @param projection the DEM's projection and full-resolution grid
+     * @param dem         the cells read (decimated or not), with their geometry in the DEM's CRS
+     * @param projection  the DEM's projection and full-resolution grid
+     * @param latticeStep pixels between the points carried exactly into the DEM's CRS ({@link
+     *                    ZoomSource#latticeStepFor}); 1 = every pixel
      */
-    SourceWindow(Dem dem, SourceProjection projection) {
+    SourceWindow(Dem dem, SourceProjection projection, int latticeStep) {
         this.dem = dem;
         this.projection = projection;
+        this.latticeStep = latticeStep;
         GridGeometry g = dem.geometry();
         GridGeometry full = projection.grid();
         this.ox = g.originX();
@@ -68,16 +72,55 @@ final class SourceWindow {
             }
             return out;
         }
-        double[] p = new double[2 * w];
-        for (int r = 0; r < h; r++) {
-            double y = zoom.centerY(row0 + r);
-            for (int c = 0; c < w; c++) {
-                p[2 * c] = zoom.centerX(col0 + c);
-                p[2 * c + 1] = y;
+        int step = latticeStep;
+        if (step <= 1) {
+            double[] p = new double[2 * w];
+            for (int r = 0; r < h; r++) {
+                double y = zoom.centerY(row0 + r);
+                for (int c = 0; c < w; c++) {
+                    p[2 * c] = zoom.centerX(col0 + c);
+                    p[2 * c + 1] = y;
+                }
+                projection.toSource(p, w);
+                for (int c = 0; c < w; c++) {
+                    out[r * w + c] = at(p[2 * c], p[2 * c + 1]);
+                }
             }
-            projection.toSource(p, w);
+            return out;
+        }
+        // the DEM positions of the pixel centres on a lattice every `step` global pixels, exactly, and of the
+        // pixels between by bilinear interpolation (ZoomGrid#latticeStep keeps its error far below a DEM cell); the
+        // lattice is aligned to the world, so a pixel gets the same position in every tile
+        long lc0 = Math.floorDiv(col0, step);
+        long lr0 = Math.floorDiv(row0, step);
+        int lw = (int) (Math.floorDiv(col0 + w - 1, step) - lc0 + 2);
+        int lh = (int) (Math.floorDiv(row0 + h - 1, step) - lr0 + 2);
+        double[] lattice = new double[2 * lw * lh];
+        for (int j = 0; j < lh; j++) {
+            for (int i = 0; i < lw; i++) {
+                int k = 2 * (j * lw + i);
+                lattice[k] = zoom.centerX((lc0 + i) * step);
+                lattice[k + 1] = zoom.centerY((lr0 + j) * step);
+            }
+        }
+        projection.toSource(lattice, lw * lh);
+        for (int r = 0; r < h; r++) {
+            long gr = row0 + r;
+            int j = (int) (Math.floorDiv(gr, step) - lr0);
+            double fv = (double) (gr - (lr0 + j) * step) / step;
             for (int c = 0; c < w; c++) {
-                out[r * w + c] = at(p[2 * c], p[2 * c + 1]);
+                long gc = col0 + c;
+                int i = (int) (Math.floorDiv(gc, step) - lc0);
+                double fu = (double) (gc - (lc0 + i) * step) / step;
+                int k00 = 2 * (j * lw + i);
+                int k10 = k00 + 2;
+                int k01 = k00 + 2 * lw;
+                int k11 = k01 + 2;
+                double x = (1 - fv) * ((1 - fu) * lattice[k00] + fu * lattice[k10])
+                        + fv * ((1 - fu) * lattice[k01] + fu * lattice[k11]);
+                double y = (1 - fv) * ((1 - fu) * lattice[k00 + 1] + fu * lattice[k10 + 1])
+                        + fv * ((1 - fu) * lattice[k01 + 1] + fu * lattice[k11 + 1]);
+                out[r * w + c] = at(x, y);
             }
         }
         return out;

@@ -23,13 +23,83 @@ final class ZoomSource {
     private final DemInput input;
     private final SourceProjection projection;
     private final ZoomGrid zoom;
+    /** Largest error of a pixel's interpolated DEM position, in DEM cells (see {@link #latticeStepFor}). */
+    static final double LATTICE_TOLERANCE = 0.01;
+
     private final int decimation;
+    private final int latticeStep;
 
     ZoomSource(DemInput input, SourceProjection projection, ZoomGrid zoom) {
         this.input = input;
         this.projection = projection;
         this.zoom = zoom;
         this.decimation = decimationFor(projection, zoom);
+        this.latticeStep = latticeStepFor(projection, zoom);
+    }
+
+    /**
+     * How far apart, in pixels of this zoom, the points carried exactly into the DEM's CRS may be, the positions of
+     * the pixels between them interpolated bilinearly (a projection such as UTM costs far more per point than the
+     * rest of a pixel's sampling): the largest of 32, 16, … 2 whose interpolation error, checked at the middle of
+     * lattice squares at 5 × 5 places over the DEM, stays within {@value #LATTICE_TOLERANCE} DEM cells; 1 (every
+     * point exact) when none does; 1 too for a DEM in latitude/longitude, whose positions cost next to nothing.
+     */
+    static int latticeStepFor(SourceProjection projection, ZoomGrid zoom) {
+        if (projection.isSeparable()) {
+            return 1;
+        }
+        GridGeometry g = projection.grid();
+        double cell = Math.min(g.cellWidth(), g.cellHeight());
+        for (int s = 32; s >= 2; s /= 2) {
+            if (latticeError(projection, zoom, s) <= LATTICE_TOLERANCE * cell) {
+                return s;
+            }
+        }
+        return 1;
+    }
+
+    /** Largest error, in DEM units, of the bilinear position at the middle of lattice squares of side {@code s}. */
+    private static double latticeError(SourceProjection projection, ZoomGrid zoom, int s) {
+        double west = projection.extent().west();
+        double east = projection.extent().east();
+        double south = projection.extent().south();
+        double north = projection.extent().north();
+        int n = 5;
+        double worst = 0;
+        double[] p = new double[10];
+        double size = WebMercatorTile.pixelSize(zoom.zoom());
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) {
+                double x = WebMercator.x(west + (east - west) * i / (n - 1));
+                double y = WebMercator.y(south + (north - south) * j / (n - 1));
+                long col = Math.floorDiv((long) Math.floor((x + WebMercator.HALF_WORLD) / size), s) * s;
+                long row = Math.floorDiv((long) Math.floor((WebMercator.HALF_WORLD - y) / size), s) * s;
+                p[0] = zoom.centerX(col);
+                p[1] = zoom.centerY(row);
+                p[2] = zoom.centerX(col + s);
+                p[3] = zoom.centerY(row);
+                p[4] = zoom.centerX(col);
+                p[5] = zoom.centerY(row + s);
+                p[6] = zoom.centerX(col + s);
+                p[7] = zoom.centerY(row + s);
+                p[8] = zoom.centerX(col + s / 2);
+                p[9] = zoom.centerY(row + s / 2);
+                projection.toSource(p, 5);
+                double ix = (p[0] + p[2] + p[4] + p[6]) / 4;
+                double iy = (p[1] + p[3] + p[5] + p[7]) / 4;
+                double e = Math.hypot(ix - p[8], iy - p[9]);
+                if (Double.isNaN(e)) {
+                    continue; // outside the projection's domain: no pixel there samples the DEM
+                }
+                worst = Math.max(worst, e);
+            }
+        }
+        return worst;
+    }
+
+    /** @return pixels between the points carried exactly into the DEM's CRS at this zoom */
+    int latticeStep() {
+        return latticeStep;
     }
 
     /** @return the block size the reader averages at this zoom */
@@ -93,7 +163,8 @@ final class ZoomSource {
         if (cells == null) {
             return null;
         }
-        return new SourceWindow(DemReader.load(input, new ReadRequest(cells, decimation)).dem(), projection);
+        return new SourceWindow(DemReader.load(input, new ReadRequest(cells, decimation)).dem(), projection,
+                latticeStep);
     }
 
     /** The aligned cell window of the DEM under {@code need}, or null when there is none. */
