@@ -45,7 +45,8 @@ import org.junit.jupiter.api.io.TempDir;
  * 36.446° to 36.733° N by gdalinfo): which tiles are written, where the data lies in them, that tiles continue across
  * their seams (shadows included), the PMTiles archive read back by a reader written here from the spec, and the
  * tiles against GDAL's ({@code gdal2tiles.py --xyz} of a {@code gdaldem hillshade} of the same DEM: the same tiles,
- * with data in the same pixels but for a pixel's width along the DEM's outline; skipped when GDAL is not installed).
+ * with data in the same pixels but for a pixel's width along the DEM's outline; skipped when GDAL is not installed),
+ * and the archive read by protomaps' own Python reader (skipped when the {@code pmtiles} package is not installed).
  */
 class TileJobTest {
 
@@ -239,6 +240,46 @@ class TileJobTest {
                         (int) (dataOffset + e[1] + e[2]));
                 assertArrayEquals(png, stored, "tile " + zxy[0] + "/" + zxy[1] + "/" + zxy[2]);
             }
+        }
+    }
+
+    @Test
+    void protomapsPythonReaderReadsTheArchive() throws Exception {
+        assumeTrue(onPath("python3") && runs("python3", "-c", "import pmtiles.reader"),
+                "the pmtiles Python package (protomaps/PMTiles) is not installed");
+        Path archive = dir.resolve("python.pmtiles");
+        job().withZooms(new ZoomRange(10, 11)).run(archive, JobListener.NONE);
+        String script = String.join("\n",
+                "import sys",
+                "from pmtiles.reader import Reader, MmapSource, all_tiles",
+                "with open(sys.argv[1], 'rb') as f:",
+                "    r = Reader(MmapSource(f))",
+                "    h = r.header()",
+                "    for (z, x, y), data in all_tiles(r.get_bytes):",
+                "        with open(sys.argv[2] + '/%d/%d/%d.png' % (z, x, y), 'rb') as png:",
+                "            assert png.read() == data, (z, x, y)",
+                "        print(z, x, y)",
+                "    print('zooms', h['min_zoom'], h['max_zoom'], r.metadata()['format'])");
+        Process p = new ProcessBuilder("python3", "-c", script, archive.toString(), tiles.toString())
+                .redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        assertEquals(0, p.exitValue(), out);
+        long expected = report.zooms().stream().filter(z -> z.z() >= 10).mapToLong(TileReport.Zoom::written).sum();
+        assertEquals(expected, out.lines().filter(l -> l.matches("\\d+ \\d+ \\d+")).count(), out);
+        assertTrue(out.contains("zooms 10 11 png"), out);
+    }
+
+    private static boolean runs(String... command) {
+        try {
+            Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+            p.getInputStream().readAllBytes();
+            return p.waitFor(60, TimeUnit.SECONDS) && p.exitValue() == 0;
+        } catch (IOException e) {
+            return false;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
         }
     }
 
