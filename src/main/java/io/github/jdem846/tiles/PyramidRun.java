@@ -62,10 +62,14 @@ final class PyramidRun {
         List<Group> groups = new ArrayList<>();
         long total = 0;
         RenderSettings perTile = new RenderSettings(1, job.execution().tileSize());
+        Overview overview = overview();
         for (int z = job.zooms().min(); z <= job.zooms().max(); z++) {
             ZoomGrid grid = new ZoomGrid(z);
+            int own = ZoomSource.decimationFor(projection, grid);
+            boolean small = Overview.isSmall(projection.grid().width(), projection.grid().height(), own);
             Level level = new Level(levels.size(), grid, TileRange.covering(projection.extent(), z),
-                    new ZoomSource(job.input(), projection, grid), new TileRasterizer(grid, scene, range, perTile));
+                    new ZoomSource(job.input(), projection, grid, small ? overview : null),
+                    new TileRasterizer(grid, scene, range, perTile));
             levels.add(level);
             total += level.range().count();
         }
@@ -139,6 +143,21 @@ final class PyramidRun {
                     level.source().decimation()));
         }
         return new TileReport(output, format, zooms, bytes.get());
+    }
+
+    /**
+     * The whole DEM read once for the zooms at which it is small ({@link Overview}), at the finest of their
+     * decimations; null when there are none.
+     */
+    private Overview overview() throws IOException {
+        int finest = Integer.MAX_VALUE;
+        for (int z = job.zooms().min(); z <= job.zooms().max(); z++) {
+            int d = ZoomSource.decimationFor(projection, new ZoomGrid(z));
+            if (Overview.isSmall(projection.grid().width(), projection.grid().height(), d)) {
+                finest = Math.min(finest, d);
+            }
+        }
+        return finest == Integer.MAX_VALUE ? null : Overview.read(job.input(), finest);
     }
 
     /** Reads the group's part of the DEM and renders, encodes and writes each of its tiles that holds data. */

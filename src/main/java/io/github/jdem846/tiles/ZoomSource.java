@@ -28,12 +28,25 @@ final class ZoomSource {
 
     private final int decimation;
     private final int latticeStep;
+    private final Overview overview;
 
+    /** Reads windows of the file at the zoom's own decimation ({@link #decimationFor}). */
     ZoomSource(DemInput input, SourceProjection projection, ZoomGrid zoom) {
+        this(input, projection, zoom, null);
+    }
+
+    /**
+     * Takes its cells from {@code overview} when given: at the largest multiple of the overview's blocks not above
+     * the zoom's own decimation.
+     */
+    ZoomSource(DemInput input, SourceProjection projection, ZoomGrid zoom, Overview overview) {
         this.input = input;
         this.projection = projection;
         this.zoom = zoom;
-        this.decimation = decimationFor(projection, zoom);
+        int own = decimationFor(projection, zoom);
+        this.overview = overview;
+        this.decimation = overview == null ? own
+                : overview.decimation() * Math.max(1, own / overview.decimation());
         this.latticeStep = latticeStepFor(projection, zoom);
     }
 
@@ -162,6 +175,10 @@ final class ZoomSource {
         Window.Cells cells = cellsFor(need);
         if (cells == null) {
             return null;
+        }
+        if (overview != null) {
+            return new SourceWindow(overview.cells(cells, decimation / overview.decimation()), projection,
+                    latticeStep);
         }
         return new SourceWindow(DemReader.load(input, new ReadRequest(cells, decimation)).dem(), projection,
                 latticeStep);
