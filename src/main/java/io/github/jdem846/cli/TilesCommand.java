@@ -32,9 +32,10 @@ import picocli.CommandLine.Parameters;
         exitCodeList = {"0:written", "1:an input could not be read or the output not written", "2:bad usage"})
 public final class TilesCommand implements Callable<Integer> {
 
-    @Parameters(index = "0", paramLabel = "FILE",
-            description = "GeoTIFF, GridFloat (.flt), ESRI ASCII (.asc), BIL (.bil) or SRTM .hgt with a known CRS.")
-    Path file;
+    @Parameters(arity = "1..*", paramLabel = "FILE",
+            description = "GeoTIFF, GridFloat (.flt), ESRI ASCII (.asc), BIL (.bil) or SRTM .hgt with a known CRS; "
+                    + "several files, a directory or a quoted glob are read as one grid (a mosaic).")
+    java.util.List<String> files;
 
     @Option(names = {"-Z", "--zoom"}, required = true, paramLabel = "MIN-MAX", converter = ZoomConverter.class,
             description = "Zoom levels, e.g. 0-12 or 10: 0 to 22.")
@@ -108,7 +109,11 @@ public final class TilesCommand implements Callable<Integer> {
         Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(method)
                 .withHillshadeOptions(shading.options()).withShadows(algorithm)
                 .withShadowOptions(shadowOptions.options()).withShadowIntensity(shadowIntensity);
-        TileJob job = TileJob.of(DemInput.of(file), zooms).withScene(scene).withSun(sun.sun())
+        InputPaths.Resolved resolved = InputPaths.resolve(spec, files);
+        for (String note : resolved.notes()) {
+            spec.commandLine().getErr().println("jdem846: note: " + note);
+        }
+        TileJob job = TileJob.of(resolved.input(), zooms).withScene(scene).withSun(sun.sun())
                 .withExecution(execution.settings()).withPngCompression(pngLevel);
         PhaseTimes times = new PhaseTimes();
         TileReport report;

@@ -46,6 +46,39 @@ class TilesCommandTest {
     }
 
     @Test
+    void aMosaicDirectoryMakesTheTilesOfTheWholeDem() throws IOException {
+        Path whole = Path.of("testdata/dem/jacksboro_srtm3s_wgs84.flt");
+        io.github.jdem846.raster.Dem dem = io.github.jdem846.io.DemReader.read(whole);
+        Path tiles = Files.createDirectories(dir.resolve("quarters"));
+        io.github.jdem846.testing.DemTiles.gridFloat(dem,
+                io.github.jdem846.testing.DemTiles.quarters(dem.width(), dem.height(), dem.width() / 2,
+                        dem.height() / 2, 1),
+                tiles, "jb", Path.of("testdata/dem/jacksboro_srtm3s_wgs84.prj"));
+        Path fromWhole = dir.resolve("whole");
+        Path fromTiles = dir.resolve("fromtiles");
+        CliRun a = CliRun.of("tiles", whole.toString(), "--zoom", "10-11", "-o", fromWhole.toString(), "-q",
+                "--shadows", "sweep", "--sun-elevation", "6");
+        assertEquals(0, a.exitCode(), a.err());
+        CliRun b = CliRun.of("tiles", tiles.toString(), "--zoom", "10-11", "-o", fromTiles.toString(), "-q",
+                "--shadows", "sweep", "--sun-elevation", "6");
+        assertEquals(0, b.exitCode(), b.err());
+        assertTrue(b.err().contains("4 DEM files"), b.err());
+        java.util.List<Path> pngs;
+        try (Stream<Path> s = Files.walk(fromWhole)) {
+            pngs = s.filter(p -> p.toString().endsWith(".png")).map(fromWhole::relativize).sorted().toList();
+        }
+        try (Stream<Path> s = Files.walk(fromTiles)) {
+            assertEquals(pngs, s.filter(p -> p.toString().endsWith(".png")).map(fromTiles::relativize).sorted()
+                    .toList(), "the same tiles");
+        }
+        assertTrue(pngs.size() > 4, "tiles at two zooms: " + pngs);
+        for (Path png : pngs) {
+            org.junit.jupiter.api.Assertions.assertArrayEquals(Files.readAllBytes(fromWhole.resolve(png)),
+                    Files.readAllBytes(fromTiles.resolve(png)), png + " of the four quarters is that of the DEM");
+        }
+    }
+
+    @Test
     void badUsageIsExitStatusTwo() {
         String out = dir.resolve("t").toString();
         String[][] bad = {
