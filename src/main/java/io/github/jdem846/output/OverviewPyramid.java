@@ -1,0 +1,177 @@
+package io.github.jdem846.output;
+
+import java.io.IOException;
+import java.util.Arrays;
+
+/**
+ * The overview levels of a COG, reduced row by row from the full-resolution rows as they arrive. Level k is
+ * {@code ⌈width / 2^k⌉ × ⌈height / 2^k⌉}; its pixel (x, y) is the mean of the full-resolution pixels in
+ * {@code [x·2^k, (x+1)·2^k) × [y·2^k, (y+1)·2^k)} that lie in the image: a box average of the full-resolution
+ * pixels, not of the rounded pixels of the level above. It is exact because each level keeps sums, not means, and
+ * sums of level k − 1 add up to those of level k; a level holds the sums of one row. Means are rounded half up.
+ *
+ * <ul>
+ *   <li>Gray without no-data: the mean of all pixels of the box.</li>
+ *   <li>Gray with a no-data value (a hillshade's 0): the mean of the box's valid pixels only, so no-data never
+ *       darkens (or brightens) valid ones; a box without valid pixels is no-data. A mean that rounds to the
+ *       no-data value becomes the value next to it on the side of the exact mean, so that it stays valid.</li>
+ *   <li>RGBA (non-premultiplied, alpha = coverage): the colour is the alpha-weighted mean, Σ(c·a) / Σa, so
+ *       transparent pixels, whatever colour bits they carry, add nothing to the colour; the alpha is the plain
+ *       mean of the alphas (transparent pixels count as 0), so an edge half covered is half transparent. A box
+ *       whose alphas are all 0 is (0, 0, 0, 0).</li>
+ * </ul>
+ */
+final class OverviewPyramid {
+
+    /** Takes the rows of the levels, each level's from the top down; the row's array is reused afterwards. */
+    @FunctionalInterface
+    interface Output {
+        void row(int level, Pixels row) throws IOException;
+    }
+
+    private final Level[] levels;
+    private final boolean rgba;
+    private final int noData;
+    private final Output output;
+
+    /**
+     * @param levels          the number of overview levels (0 for none)
+     * @param samplesPerPixel 4 (RGBA) or 1 (gray), 8 bits each
+     * @param noData          the gray no-data value 0..255, or {@code null}
+     */
+    OverviewPyramid(int width, int height, int levels, int samplesPerPixel, Integer noData, Output output) {
+        this.rgba = samplesPerPixel == 4;
+        this.noData = rgba || noData == null ? -1 : noData;
+        this.output = output;
+        this.levels = new Level[levels + 1];
+        int w = width;
+        int h = height;
+        for (int k = 1; k <= levels; k++) {
+            int sourceHeight = h;
+            w = (w + 1) / 2;
+            h = (h + 1) / 2;
+            this.levels[k] = new Level(k, w, sourceHeight, rgba ? 4 : 1);
+        }
+    }
+
+    /** Adds the next full-resolution row, in the file's layout (R, G, B, A or gray bytes). */
+    void add(byte[] row, int width) throws IOException {
+        if (levels.length == 1) {
+            return;
+        }
+        Level first = levels[1];
+        if (rgba) {
+            for (int x = 0; x < width; x++) {
+                int j = 4 * x;
+                long a = row[j + 3] & 0xFF;
+                int at = 4 * (x >> 1);
+                first.sums[at] += (row[j] & 0xFF) * a;
+                first.sums[at + 1] += (row[j + 1] & 0xFF) * a;
+                first.sums[at + 2] += (row[j + 2] & 0xFF) * a;
+                first.sums[at + 3] += a;
+                first.counts[x >> 1]++;
+            }
+        } else {
+            for (int x = 0; x < width; x++) {
+                int v = row[x] & 0xFF;
+                if (v != noData) {
+                    first.sums[x >> 1] += v;
+                    first.counts[x >> 1]++;
+                }
+            }
+        }
+        first.sourceRowAdded();
+    }
+
+    /** @return whether every level has given all its rows */
+    boolean isComplete() {
+        for (int k = 1; k < levels.length; k++) {
+            if (levels[k].sourceRows != levels[k].sourceHeight) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** One overview level: the sums of the row being made from the rows of the level above. */
+    private final class Level {
+        final int index;
+        final int width;
+        final int sourceHeight;
+        final int channels;
+        final long[] sums;
+        final long[] counts;
+        final byte[] out;
+        int sourceRows;
+
+        Level(int index, int width, int sourceHeight, int channels) {
+            this.index = index;
+            this.width = width;
+            this.sourceHeight = sourceHeight;
+            this.channels = channels;
+            this.sums = new long[width * channels];
+            this.counts = new long[width];
+            this.out = new byte[width * channels];
+        }
+
+        /** Adds the sums of a row of the level above (of {@code sourceWidth} pixels). */
+        void add(long[] sourceSums, long[] sourceCounts, int sourceWidth) throws IOException {
+            for (int x = 0; x < sourceWidth; x++) {
+                int to = (x >> 1) * channels;
+                int from = x * channels;
+                for (int c = 0; c < channels; c++) {
+                    sums[to + c] += sourceSums[from + c];
+                }
+                counts[x >> 1] += sourceCounts[x];
+            }
+            sourceRowAdded();
+        }
+
+        /** After a row of the level above: a row of this level is done after two, or after the last one. */
+        void sourceRowAdded() throws IOException {
+            sourceRows++;
+            if (sourceRows % 2 != 0 && sourceRows != sourceHeight) {
+                return;
+            }
+            for (int x = 0; x < width; x++) {
+                if (rgba) {
+                    mean(x);
+                } else {
+                    out[x] = (byte) grayMean(sums[x], counts[x]);
+                }
+            }
+            output.row(index, new Pixels.Encoded(out, width, 1, channels, 8));
+            if (index + 1 < levels.length) {
+                levels[index + 1].add(sums, counts, width);
+            }
+            Arrays.fill(sums, 0);
+            Arrays.fill(counts, 0);
+        }
+
+        private void mean(int x) {
+            int j = 4 * x;
+            long alphas = sums[j + 3];
+            if (alphas == 0) {
+                Arrays.fill(out, j, j + 4, (byte) 0);
+                return;
+            }
+            long n = counts[x];
+            out[j] = (byte) ((sums[j] + alphas / 2) / alphas);
+            out[j + 1] = (byte) ((sums[j + 1] + alphas / 2) / alphas);
+            out[j + 2] = (byte) ((sums[j + 2] + alphas / 2) / alphas);
+            out[j + 3] = (byte) ((alphas + n / 2) / n);
+        }
+
+        private int grayMean(long sum, long n) {
+            if (n == 0) {
+                return Math.max(noData, 0);
+            }
+            int mean = (int) ((sum + n / 2) / n);
+            if (mean != noData) {
+                return mean;
+            }
+            boolean above = sum > (long) noData * n || (sum == (long) noData * n && noData < 255);
+            return above ? noData + 1 : noData - 1;
+        }
+    }
+}
