@@ -14,9 +14,9 @@ import java.util.Locale;
 /**
  * A Cloud-Optimized GeoTIFF (COG), written band of rows after band of rows ({@link BandEncoder}): square tiles
  * ({@link WriteOptions#cogTileSize()}, 512 by default), Deflate with the horizontal predictor, the tags of
- * {@link GeoTiffTags}, and overviews each half the size of the one before ({@link OverviewPyramid}: box averages
- * of the full-resolution pixels) until the smallest fits in one tile, as GDAL's COG driver makes them. Only 8-bit
- * gray and RGBA.
+ * {@link GeoTiffTags}, and overviews each half the size of the one before, rounded down, until the smallest fits in
+ * one tile, as many and as large as GDAL's COG driver makes them ({@link OverviewPyramid}: box averages of the
+ * full-resolution pixels, where GDAL's default is cubic resampling). Only 8-bit gray and RGBA.
  *
  * <p>The file has GDAL's COG layout, and says so in GDAL's "ghost" structural metadata right after the header,
  * which makes {@code gdalinfo} report {@code LAYOUT=COG}: {@code LAYOUT=IFDS_BEFORE_DATA} (the IFDs of all levels,
@@ -137,8 +137,8 @@ final class CogWriter implements BandEncoder {
             for (int k = 0; k <= overviews; k++) {
                 int tiles = Math.multiplyExact(RowChunks.count(w, tileSize), RowChunks.count(h, tileSize));
                 levels.add(new Level(w, h, new TileStore(scratch.create("level" + k), tiles)));
-                w = (w + 1) / 2;
-                h = (h + 1) / 2;
+                w = OverviewPyramid.half(w);
+                h = OverviewPyramid.half(h);
             }
         } catch (IOException | RuntimeException e) {
             close();
@@ -149,12 +149,13 @@ final class CogWriter implements BandEncoder {
     }
 
     /**
-     * The number of overview levels: halving (rounding up) until the picture fits in one tile, as GDAL's COG
-     * driver counts them by default.
+     * The number of overview levels: halving ({@link OverviewPyramid#half}) until the picture fits in one tile, as
+     * GDAL's COG driver counts them by default.
      */
     static int overviewCount(int width, int height, int tileSize) {
         int count = 0;
-        for (long w = width, h = height; w > tileSize || h > tileSize; w = (w + 1) / 2, h = (h + 1) / 2) {
+        for (int w = width, h = height; w > tileSize || h > tileSize; w = OverviewPyramid.half(w),
+                h = OverviewPyramid.half(h)) {
             count++;
         }
         return count;

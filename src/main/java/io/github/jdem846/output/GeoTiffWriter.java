@@ -34,8 +34,6 @@ import java.util.List;
  */
 final class GeoTiffWriter implements BandEncoder {
 
-    /** Re-exported for tests: the GDAL_NODATA tag. */
-    static final int TAG_GDAL_NODATA = GeoTiffTags.TAG_GDAL_NODATA;
     private static final int STRIP_TARGET_BYTES = 1 << 16;
     /** Strips compressed at once, per processor: a bound on the compressed data held before it is written. */
     private static final int STRIPS_PER_BATCH_AND_PROCESSOR = 8;
