@@ -8,7 +8,8 @@ import java.util.Objects;
 
 /**
  * Writes the renderer's products as image files, the format chosen from the file extension ({@link ImageFormat}):
- * PNG ({@code .png}) or GeoTIFF ({@code .tif}, {@code .tiff}).
+ * PNG ({@code .png}) or GeoTIFF ({@code .tif}, {@code .tiff}; in strips or as a Cloud-Optimized GeoTIFF,
+ * {@link WriteOptions#tiffLayout()}), the whole picture at once or band of rows by band of rows ({@link ImageSink}).
  *
  * <p>Writing is all or nothing: the image and its sidecars are written to temporary files in the target directory
  * and renamed into place only when all are complete, the image first; on any failure the temporary files are
