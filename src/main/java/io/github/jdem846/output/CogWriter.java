@@ -66,7 +66,6 @@ final class CogWriter implements BandEncoder {
     private final List<Level> levels = new ArrayList<>();
     private final OverviewPyramid pyramid;
     private final byte[] row;
-    private boolean big;
     private boolean finished;
 
     /** One level: its size, its tile rows and the store of its tiles. */
@@ -161,11 +160,6 @@ final class CogWriter implements BandEncoder {
         return count;
     }
 
-    /** @return whether the finished file is a BigTIFF */
-    boolean isBigTiff() {
-        return big;
-    }
-
     @Override
     public void append(Pixels band) throws IOException {
         if (finished) {
@@ -199,7 +193,7 @@ final class CogWriter implements BandEncoder {
         for (int k = 0; k < levels.size(); k++) {
             directories.add(directory(k));
         }
-        big = placeTiles(directories, false) > classicLimit;
+        boolean big = placeTiles(directories, false) > classicLimit;
         if (big) {
             placeTiles(directories, true);
         }
@@ -208,12 +202,12 @@ final class CogWriter implements BandEncoder {
         try (FileChannel out = FileChannel.open(file, StandardOpenOption.WRITE, StandardOpenOption.CREATE,
                 StandardOpenOption.TRUNCATE_EXISTING)) {
             long at = TiffDirectory.align(header + ghost.length);
-            writeFully(out, TiffDirectory.header(big, at), 0);
-            writeFully(out, ByteBuffer.wrap(ghost), header);
+            FileChannels.writeFully(out, TiffDirectory.header(big, at), 0);
+            FileChannels.writeFully(out, ByteBuffer.wrap(ghost), header);
             for (int k = 0; k < directories.size(); k++) {
                 TiffDirectory d = directories.get(k);
                 long next = k + 1 < directories.size() ? at + d.size(big) : 0;
-                writeFully(out, d.layOut(at, next, big), at);
+                FileChannels.writeFully(out, d.layOut(at, next, big), at);
                 at += d.size(big);
             }
             for (int k = levels.size() - 1; k >= 0; k--) {
@@ -283,12 +277,5 @@ final class CogWriter implements BandEncoder {
     static byte[] ghost() {
         String text = String.format(Locale.ROOT, "GDAL_STRUCTURAL_METADATA_SIZE=%06d bytes\n", GHOST.length()) + GHOST;
         return text.getBytes(StandardCharsets.US_ASCII);
-    }
-
-    private static void writeFully(FileChannel out, ByteBuffer data, long at) throws IOException {
-        long p = at;
-        while (data.hasRemaining()) {
-            p += out.write(data, p);
-        }
     }
 }

@@ -84,11 +84,6 @@ final class GeoTiffWriter implements BandEncoder {
                 StandardOpenOption.TRUNCATE_EXISTING);
     }
 
-    /** @return whether the file is a BigTIFF */
-    boolean isBigTiff() {
-        return big;
-    }
-
     @Override
     public void append(Pixels band) throws IOException {
         if (finished) {
@@ -113,8 +108,8 @@ final class GeoTiffWriter implements BandEncoder {
         if (!big && ifdOffset + ifd.remaining() > TiffDirectory.CLASSIC_LIMIT) {
             throw new IOException("the GeoTIFF passed the 4 GiB a classic TIFF can address");
         }
-        writeFully(ifd, ifdOffset);
-        writeFully(TiffDirectory.header(big, ifdOffset), 0);
+        FileChannels.writeFully(channel, ifd, ifdOffset);
+        FileChannels.writeFully(channel, TiffDirectory.header(big, ifdOffset), 0);
         finished = true;
     }
 
@@ -136,7 +131,7 @@ final class GeoTiffWriter implements BandEncoder {
             int s = ready.get(next[0]++).index();
             offsets[s] = position;
             counts[s] = data.length;
-            writeFully(ByteBuffer.wrap(data), position);
+            FileChannels.writeFully(channel, ByteBuffer.wrap(data), position);
             position += data.length;
         });
     }
@@ -149,12 +144,5 @@ final class GeoTiffWriter implements BandEncoder {
             strip.row(r, raw, r * rowBytes);
         }
         return TiffBlocks.deflate(raw, strip.rows(), rowBytes, samplesPerPixel, predictor);
-    }
-
-    private void writeFully(ByteBuffer data, long at) throws IOException {
-        long p = at;
-        while (data.hasRemaining()) {
-            p += channel.write(data, p);
-        }
     }
 }

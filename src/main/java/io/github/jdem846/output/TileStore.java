@@ -43,10 +43,7 @@ final class TileStore implements Closeable {
         }
         ByteBuffer framed = ByteBuffer.allocate(tile.length + FRAME_BYTES).order(ByteOrder.LITTLE_ENDIAN);
         framed.putInt(tile.length).put(tile).put(tile, tile.length - 4, 4).flip();
-        long at = size;
-        while (framed.hasRemaining()) {
-            at += channel.write(framed, at);
-        }
+        FileChannels.writeFully(channel, framed, size);
         offsets[next] = size + 4;
         counts[next] = tile.length;
         size += tile.length + FRAME_BYTES;
