@@ -3,6 +3,7 @@ package io.github.jdem846.bench;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.testing.SyntheticDems;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.ByteBuffer;
@@ -38,22 +39,9 @@ public final class MirroredDem {
     private MirroredDem() {
     }
 
-    /** The source cell that output cell {@code i} (0 ≤ i) takes along an axis of {@code length} source cells. */
-    static int sourceIndex(int i, int length) {
-        int local = i % length;
-        return (i / length) % 2 == 0 ? local : length - 1 - local;
-    }
-
-    /** {@code source} mirror-tiled to {@code n × n} in memory, on the source's origin, cell size and CRS. */
+    /** {@code source} mirror-tiled to {@code n × n} in memory ({@link SyntheticDems#mirrored}). */
     public static Dem mirrored(Dem source, int n) {
-        float[] v = new float[Math.multiplyExact(n, n)];
-        for (int y = 0; y < n; y++) {
-            int sy = sourceIndex(y, source.height());
-            for (int x = 0; x < n; x++) {
-                v[y * n + x] = source.get(sourceIndex(x, source.width()), sy);
-            }
-        }
-        return Dem.ofNormalized(v, geometry(source.geometry(), n), source.declaredNoData());
+        return SyntheticDems.mirrored(source, n, n);
     }
 
     /** Big Tujunga ({@link #BIG_TUJUNGA}) mirror-tiled to {@code n × n}. */
@@ -77,10 +65,10 @@ public final class MirroredDem {
         ByteBuffer row = ByteBuffer.allocate(n * 4).order(ByteOrder.LITTLE_ENDIAN);
         try (OutputStream out = Files.newOutputStream(Path.of(base + ".flt"))) {
             for (int y = 0; y < n; y++) {
-                int sy = sourceIndex(y, dem.height());
+                int sy = SyntheticDems.mirroredIndex(y, dem.height());
                 row.clear();
                 for (int x = 0; x < n; x++) {
-                    float z = dem.get(sourceIndex(x, dem.width()), sy);
+                    float z = dem.get(SyntheticDems.mirroredIndex(x, dem.width()), sy);
                     row.putFloat(Float.isNaN(z) ? NO_DATA : z);
                 }
                 out.write(row.array(), 0, row.position());
@@ -91,11 +79,6 @@ public final class MirroredDem {
                 g.cellWidth(), NO_DATA);
         Files.writeString(Path.of(base + ".hdr"), hdr, StandardCharsets.US_ASCII);
         Files.copy(prj, Path.of(base + ".prj"), StandardCopyOption.REPLACE_EXISTING);
-    }
-
-    private static GridGeometry geometry(GridGeometry g, int n) {
-        return new GridGeometry(n, n, g.originX(), g.originY(), g.cellWidth(), g.cellHeight(), g.crs(),
-                g.declaredAnchor());
     }
 
     /** {@code file} with its extension (if any) replaced by {@code extension}. */

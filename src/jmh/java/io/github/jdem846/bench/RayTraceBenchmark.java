@@ -1,14 +1,11 @@
 package io.github.jdem846.bench;
 
 import io.github.jdem846.light.LightDirection;
-import io.github.jdem846.geo.CrsInfo;
-import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.raster.Dem;
-import io.github.jdem846.raster.GridGeometry;
-import io.github.jdem846.raster.PixelAnchor;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowMask;
 import io.github.jdem846.shadow.ShadowOptions;
+import io.github.jdem846.testing.SyntheticDems;
 import java.io.IOException;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.TimeUnit;
@@ -29,15 +26,17 @@ import org.openjdk.jmh.annotations.Warmup;
 /**
  * Cast shadows of a whole DEM, sun at azimuth 300° (off the grid axes and diagonals), on a pool of one thread: the
  * score is milliseconds per whole grid, so score / cells is the cost of one ray ({@code march}, {@code exact}) or of
- * one cell ({@code sweep}). {@code exact} runs at 512² only. The DEM ({@code dem} parameter) is the seeded fractal
- * ({@link FractalDem}, seed 846, 30 m cells; the default) or {@code mirrored}: Big Tujunga SRTM 30 m mirror-tiled
+ * one cell ({@code sweep}, {@code sweepThinFeatures}, {@code sweepSoft}). {@code exact} runs at 512² only. The DEM
+ * ({@code dem} parameter) is the seeded fractal ({@link FractalDem}, seed 846, 30 m cells; the default) or
+ * {@code mirrored}: Big Tujunga SRTM 30 m mirror-tiled
  * ({@link MirroredDem}; real mountains, read from testdata, so run from the worktree root), or
  * {@code mirrored-latlon}: the same on a 1″ lat/lon grid ({@link #onLatLonGrid}), where the step length changes from
  * row to row.
  *
  * <pre>./mvnw -B -o -q -Pjmh package -DskipTests
  * java -jar target/benchmarks.jar RayTraceBenchmark -f 1 -wi 2 -i 3
- * java -jar target/benchmarks.jar 'RayTraceBenchmark.(sweep|march)' -p dem=mirrored -p size=2048 -p elevation=5</pre>
+ * java -jar target/benchmarks.jar 'RayTraceBenchmark.(sweep|march)' -p dem=mirrored -p size=2048 -p elevation=5
+ * java -jar target/benchmarks.jar 'RayTraceBenchmark.sweepSoft' -p dem=fractal,mirrored-latlon -p size=2048</pre>
  */
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
@@ -65,10 +64,7 @@ public class RayTraceBenchmark {
      * a step length per row, the sweep's lat/lon path.
      */
     static Dem onLatLonGrid(Dem dem) {
-        double arcSecond = 1.0 / 3600;
-        GridGeometry g = new GridGeometry(dem.width(), dem.height(), -118.5, 35.0, arcSecond, arcSecond,
-                CrsInfo.geographic("WGS 84", 4326, Ellipsoid.WGS84), PixelAnchor.CORNER);
-        return new Dem(dem.backingArray(), g);
+        return SyntheticDems.geographic(dem.width(), dem.height(), -118.5, 35.0, 1.0 / 3600, dem.backingArray());
     }
 
     /** A DEM, the sun and a one-thread pool; the grid's size is the subclass's. */
@@ -136,6 +132,15 @@ public class RayTraceBenchmark {
     @Benchmark
     public ShadowMask sweepThinFeatures(Grid g) {
         return ShadowAlgorithm.SWEEP.compute(g.grid, g.light, ShadowOptions.DEFAULTS.withThinFeatures(true), g.pool);
+    }
+
+    /**
+     * Soft shadows by the sweep ({@link ShadowOptions#withSoftShadows}): the 17 elevations across the sun's disk in
+     * one walk of the lines ({@code LevelsWalk}, uniform or lat/lon by the grid), then each cell's hidden fraction.
+     */
+    @Benchmark
+    public ShadowMask sweepSoft(Grid g) {
+        return ShadowAlgorithm.SWEEP.compute(g.grid, g.light, ShadowOptions.DEFAULTS.withSoftShadows(true), g.pool);
     }
 
     /** The reference: eighth-cell steps on the bilinear surface. */

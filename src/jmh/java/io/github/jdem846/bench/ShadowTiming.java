@@ -30,7 +30,7 @@ public final class ShadowTiming {
             System.exit(2);
         }
         int size = Integer.parseInt(args[0]);
-        ShadowAlgorithm algorithm = ShadowAlgorithm.parse(args[1]);
+        ShadowAlgorithm algorithm = ShadowAlgorithm.valueOf(args[1].trim().toUpperCase(Locale.ROOT));
         LightDirection light = new LightDirection(Double.parseDouble(args[2]), Double.parseDouble(args[3]));
         int threads = Integer.parseInt(args[4]);
         int runs = Integer.parseInt(args[5]);
@@ -54,7 +54,7 @@ public final class ShadowTiming {
         pool.shutdown();
         double cells = (double) size * size;
         System.out.printf(Locale.ROOT, "%s %s %d² sun %s/%s threads %d: first %.1f ms (%.1f Mcells/s), best of %d more"
-                        + " %.1f ms (%.1f Mcells/s), shadowed %.3f %%%n", algorithm.cliName(),
+                        + " %.1f ms (%.1f Mcells/s), shadowed %.3f %%%n", algorithm.name().toLowerCase(Locale.ROOT),
                 args.length == 7 ? args[6] : "fractal", size, args[2], args[3],
                 threads, first, cells / first / 1e3, runs - 1, best, cells / best / 1e3, 100.0 * shadowed / cells);
     }

@@ -1,6 +1,8 @@
 package io.github.jdem846.output;
 
 import com.pngencoder.PngEncoder;
+import io.github.jdem846.testing.SyntheticDems;
+import io.github.jdem846.testing.SyntheticDems.ShadedRelief;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -42,9 +44,9 @@ public final class PngEncodingComparison {
         Path dir = Path.of(args.length > 2 ? args[2] : "target/png-bench");
         String only = args.length > 3 ? args[3] : ".*";
         Files.createDirectories(dir);
-        SyntheticRelief relief = new SyntheticRelief(size, size, 846);
-        BufferedImage rgba = Rasters.argbImage(relief.argb, size, size);
-        BufferedImage gray = Rasters.grayImage(relief.gray, size, size);
+        ShadedRelief relief = SyntheticDems.shadedRelief(size, size, 846);
+        BufferedImage rgba = Rasters.argbImage(relief.argb(), size, size);
+        BufferedImage gray = Rasters.grayImage(relief.gray(), size, size);
         System.out.printf(Locale.ROOT, "nproc=%d, java %s, pngencoder default level %d%n",
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
                 PngEncoder.DEFAULT_COMPRESSION_LEVEL);

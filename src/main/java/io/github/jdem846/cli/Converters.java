@@ -267,11 +267,11 @@ final class Converters {
         }
     }
 
-    /** {@code --shadows} of render: {@link ShadowAlgorithm#parse}. */
+    /** {@code --shadows} of render: {@link MethodNames#shadows}. */
     static final class Algorithm implements ITypeConverter<ShadowAlgorithm> {
         @Override
         public ShadowAlgorithm convert(String text) {
-            return checked(() -> ShadowAlgorithm.parse(text));
+            return checked(() -> MethodNames.shadows(text));
         }
     }
 
@@ -279,7 +279,7 @@ final class Converters {
     static final class MaskAlgorithm implements ITypeConverter<ShadowAlgorithm> {
         @Override
         public ShadowAlgorithm convert(String text) {
-            ShadowAlgorithm a = checked(() -> ShadowAlgorithm.parse(text));
+            ShadowAlgorithm a = checked(() -> MethodNames.shadows(text));
             if (a == ShadowAlgorithm.NONE) {
                 throw new TypeConversionException("none makes no mask; choose sweep, march or exact");
             }

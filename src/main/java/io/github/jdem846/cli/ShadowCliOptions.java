@@ -31,7 +31,7 @@ public final class ShadowCliOptions {
     void noteUnused(ShadowAlgorithm algorithm, PrintWriter err) {
         if (thinFeatures && algorithm != ShadowAlgorithm.SWEEP) {
             err.println("jdem846: note: --thin-features changes only the sweep; it has no effect with "
-                    + (algorithm == ShadowAlgorithm.NONE ? "no shadows" : algorithm.cliName()));
+                    + (algorithm == ShadowAlgorithm.NONE ? "no shadows" : MethodNames.of(algorithm)));
         }
     }
 

@@ -184,11 +184,7 @@ public final class SunCommand implements Callable<Integer> {
     static final class TimeConverter implements CommandLine.ITypeConverter<ZonedDateTime> {
         @Override
         public ZonedDateTime convert(String value) {
-            try {
-                return ZonedTimeParser.parse(value);
-            } catch (IllegalArgumentException e) {
-                throw new CommandLine.TypeConversionException(e.getMessage());
-            }
+            return Converters.checked(() -> ZonedTimeParser.parse(value));
         }
     }
 
@@ -196,11 +192,7 @@ public final class SunCommand implements Callable<Integer> {
     static final class LatLonConverter implements CommandLine.ITypeConverter<LatLon> {
         @Override
         public LatLon convert(String value) {
-            try {
-                return LatLon.parse(value);
-            } catch (IllegalArgumentException e) {
-                throw new CommandLine.TypeConversionException(e.getMessage());
-            }
+            return Converters.checked(() -> LatLon.parse(value));
         }
     }
 }

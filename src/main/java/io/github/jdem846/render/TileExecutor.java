@@ -9,11 +9,11 @@ import java.util.concurrent.atomic.AtomicLong;
  * Runs one task per tile of a raster on a {@link ForkJoinPool}, reporting progress and stopping promptly when the
  * calling thread is interrupted. The renderer owns threads and tiles; stages are pure functions of a rectangle.
  */
-public final class TileExecutor {
+final class TileExecutor {
 
     /** Work on one rectangle {@code [col0, col0 + w) × [row0, row0 + h)}. Must be thread-safe. */
     @FunctionalInterface
-    public interface TileTask {
+    interface TileTask {
         void run(int col0, int row0, int w, int h);
     }
 
@@ -24,7 +24,7 @@ public final class TileExecutor {
      * @param pool     the pool to run on (the caller owns it)
      * @param tileSize tile edge in cells, ≥ 1
      */
-    public TileExecutor(ForkJoinPool pool, int tileSize) {
+    TileExecutor(ForkJoinPool pool, int tileSize) {
         if (tileSize < 1) {
             throw new IllegalArgumentException("tile size must be at least 1, got " + tileSize);
         }
@@ -38,7 +38,7 @@ public final class TileExecutor {
      * @throws InterruptedException if the calling thread is interrupted: tiles not yet started are skipped, the call
      *                              returns once the running ones have finished, and the interrupt status is cleared
      */
-    public void forEachTile(int width, int height, String stage, RenderProgress progress, TileTask task)
+    void forEachTile(int width, int height, String stage, RenderProgress progress, TileTask task)
             throws InterruptedException {
         TileGrid grid = new TileGrid(width, height, tileSize);
         int n = grid.count();

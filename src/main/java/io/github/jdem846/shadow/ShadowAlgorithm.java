@@ -3,7 +3,6 @@ package io.github.jdem846.shadow;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.parallel.Cancellation;
 import io.github.jdem846.raster.Dem;
-import java.util.Locale;
 import java.util.Objects;
 import java.util.concurrent.ForkJoinPool;
 
@@ -31,22 +30,6 @@ public enum ShadowAlgorithm {
     EXACT,
     /** No cast shadows: every cell lit. */
     NONE;
-
-    /** The CLI name: march, sweep, exact, none. */
-    public String cliName() {
-        return name().toLowerCase(Locale.ROOT);
-    }
-
-    /** The algorithm named {@code name} (case-insensitive). */
-    public static ShadowAlgorithm parse(String name) {
-        for (ShadowAlgorithm a : values()) {
-            if (a.cliName().equalsIgnoreCase(name == null ? "" : name.trim())) {
-                return a;
-            }
-        }
-        throw new IllegalArgumentException("unknown shadow algorithm '" + name
-                + "'; expected one of march, sweep, exact, none");
-    }
 
     /** Shadows of the whole DEM on the common ForkJoinPool. */
     public ShadowMask compute(Dem dem, LightDirection light, ShadowOptions options) {

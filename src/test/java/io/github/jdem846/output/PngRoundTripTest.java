@@ -3,6 +3,8 @@ package io.github.jdem846.output;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import io.github.jdem846.testing.SyntheticDems;
+import io.github.jdem846.testing.SyntheticDems.ShadedRelief;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.InputStream;
@@ -96,13 +98,13 @@ class PngRoundTripTest {
     @Test
     void realisticReliefRoundTripsExactly() throws IOException {
         // Large enough (640 × 480 × 4 bytes) for the encoder to deflate several segments in parallel.
-        SyntheticRelief relief = new SyntheticRelief(640, 480, 7);
+        ShadedRelief relief = SyntheticDems.shadedRelief(640, 480, 7);
         Path rgba = dir.resolve("relief.png");
-        ImageOutput.writeRgba(rgba, relief.argb, 640, 480, null, OPTIONS);
-        assertArrayEquals(relief.argb, readArgb(rgba, 640, 480));
+        ImageOutput.writeRgba(rgba, relief.argb(), 640, 480, null, OPTIONS);
+        assertArrayEquals(relief.argb(), readArgb(rgba, 640, 480));
         Path gray = dir.resolve("shade.png");
-        ImageOutput.writeGray(gray, relief.gray, 640, 480, null, OPTIONS);
-        assertArrayEquals(relief.gray, readGray(gray, 640, 480));
+        ImageOutput.writeGray(gray, relief.gray(), 640, 480, null, OPTIONS);
+        assertArrayEquals(relief.gray(), readGray(gray, 640, 480));
     }
 
     @ParameterizedTest(name = "level {0}")

@@ -5,6 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.pngencoder.PngEncoder;
+import io.github.jdem846.testing.PoolExtension;
+import io.github.jdem846.testing.SyntheticDems;
+import io.github.jdem846.testing.SyntheticDems.ShadedRelief;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -21,6 +24,7 @@ import java.util.zip.DataFormatException;
 import java.util.zip.Inflater;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
@@ -32,13 +36,15 @@ class PngWriterTest {
 
     private static final int W = 1100;
     private static final int H = 1000;
-    private static final SyntheticRelief RELIEF = new SyntheticRelief(W, H, 21);
+    private static final ShadedRelief RELIEF = SyntheticDems.shadedRelief(W, H, 21);
+    @RegisterExtension
+    static final PoolExtension POOLS = new PoolExtension(1, 2, 3, 5);
 
     @TempDir
     Path dir;
 
     private static List<BufferedImage> images() {
-        return List.of(Rasters.argbImage(RELIEF.argb, W, H), Rasters.grayImage(RELIEF.gray, W, H));
+        return List.of(Rasters.argbImage(RELIEF.argb(), W, H), Rasters.grayImage(RELIEF.gray(), W, H));
     }
 
     private static byte[] encode(BufferedImage image, int level, boolean parallel) {
@@ -58,14 +64,9 @@ class PngWriterTest {
                 byte[] one = encode(image, level, false);
                 String what = (image.getType() == BufferedImage.TYPE_BYTE_GRAY ? "gray" : "RGBA") + " level " + level;
                 assertArrayEquals(one, encode(image, level, true), what + ", common pool");
-                for (int threads : new int[] {1, 2, 3, 5}) {
-                    ForkJoinPool pool = new ForkJoinPool(threads);   // parallel streams run in the caller's pool
-                    try {
-                        assertArrayEquals(one, pool.submit(() -> encode(image, level, true)).get(),
-                                what + ", " + threads + " threads");
-                    } finally {
-                        pool.shutdown();
-                    }
+                for (ForkJoinPool pool : POOLS.all()) {   // parallel streams run in the caller's pool
+                    assertArrayEquals(one, pool.submit(() -> encode(image, level, true)).get(),
+                            what + ", " + pool.getParallelism() + " threads");
                 }
             }
         }
@@ -76,18 +77,18 @@ class PngWriterTest {
         Path serial = dir.resolve("serial.png");
         Path parallel = dir.resolve("parallel.png");
         WriteOptions options = WriteOptions.defaults().withSidecars(WriteOptions.Sidecars.NONE);
-        ImageOutput.writeRgba(serial, RELIEF.argb, W, H, null, options.withParallelCompression(false));
-        ImageOutput.writeRgba(parallel, RELIEF.argb, W, H, null, options.withParallelCompression(true));
+        ImageOutput.writeRgba(serial, RELIEF.argb(), W, H, null, options.withParallelCompression(false));
+        ImageOutput.writeRgba(parallel, RELIEF.argb(), W, H, null, options.withParallelCompression(true));
         assertArrayEquals(Files.readAllBytes(serial), Files.readAllBytes(parallel));
         BufferedImage back = ImageIO.read(parallel.toFile());
-        assertArrayEquals(RELIEF.argb, back.getRGB(0, 0, W, H, null, 0, W));
+        assertArrayEquals(RELIEF.argb(), back.getRGB(0, 0, W, H, null, 0, W));
 
-        ImageOutput.writeGray(serial, RELIEF.gray, W, H, null, options.withParallelCompression(false));
-        ImageOutput.writeGray(parallel, RELIEF.gray, W, H, null, options.withParallelCompression(true));
+        ImageOutput.writeGray(serial, RELIEF.gray(), W, H, null, options.withParallelCompression(false));
+        ImageOutput.writeGray(parallel, RELIEF.gray(), W, H, null, options.withParallelCompression(true));
         assertArrayEquals(Files.readAllBytes(serial), Files.readAllBytes(parallel));
         int[] samples = ImageIO.read(parallel.toFile()).getRaster().getSamples(0, 0, W, H, 0, (int[]) null);
         for (int i = 0; i < samples.length; i++) {
-            assertEquals(RELIEF.gray[i] & 0xFF, samples[i], "sample " + i);
+            assertEquals(RELIEF.gray()[i] & 0xFF, samples[i], "sample " + i);
         }
     }
 

@@ -8,29 +8,27 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.testing.InterruptedRun;
+import io.github.jdem846.testing.PoolExtension;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicIntegerArray;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 class CancellationTest {
 
+    @RegisterExtension
+    static final PoolExtension POOLS = new PoolExtension(1, 2, 3);
+
     @Test
     void everyPartRunsOnceOnAnyPool() {
-        for (ForkJoinPool pool : new ForkJoinPool[] {new ForkJoinPool(1), new ForkJoinPool(3),
-            ForkJoinPool.commonPool()}) {
-            try {
-                for (int parts : new int[] {0, 1, 2, 7, 1000}) {
-                    AtomicIntegerArray runs = new AtomicIntegerArray(parts);
-                    Cancellation.invokeAll(pool, parts, (i, c) -> runs.incrementAndGet(i));
-                    for (int i = 0; i < parts; i++) {
-                        assertEquals(1, runs.get(i), "part " + i + " of " + parts);
-                    }
-                }
-            } finally {
-                if (pool != ForkJoinPool.commonPool()) {
-                    pool.shutdown();
+        for (ForkJoinPool pool : new ForkJoinPool[] {POOLS.get(1), POOLS.get(3), ForkJoinPool.commonPool()}) {
+            for (int parts : new int[] {0, 1, 2, 7, 1000}) {
+                AtomicIntegerArray runs = new AtomicIntegerArray(parts);
+                Cancellation.invokeAll(pool, parts, (i, c) -> runs.incrementAndGet(i));
+                for (int i = 0; i < parts; i++) {
+                    assertEquals(1, runs.get(i), "part " + i + " of " + parts);
                 }
             }
         }
@@ -38,34 +36,25 @@ class CancellationTest {
 
     @Test
     void aWorkerOfThePoolMayCallItWithoutDeadlock() {
-        ForkJoinPool one = new ForkJoinPool(1);
-        try {
-            AtomicInteger runs = new AtomicInteger();
-            one.submit(() -> Cancellation.invokeAll(one, 50, (i, c) -> runs.incrementAndGet())).join();
-            assertEquals(50, runs.get());
-        } finally {
-            one.shutdown();
-        }
+        ForkJoinPool one = POOLS.get(1);
+        AtomicInteger runs = new AtomicInteger();
+        one.submit(() -> Cancellation.invokeAll(one, 50, (i, c) -> runs.incrementAndGet())).join();
+        assertEquals(50, runs.get());
     }
 
     @Test
     void aFailingPartStopsTheOthersAndItsExceptionReachesTheCaller() {
-        ForkJoinPool pool = new ForkJoinPool(2);
-        try {
-            IllegalStateException boom = new IllegalStateException("boom");
-            AtomicInteger started = new AtomicInteger();
-            IllegalStateException thrown = assertThrows(IllegalStateException.class,
-                    () -> Cancellation.invokeAll(pool, 10_000, (i, c) -> {
-                        started.incrementAndGet();
-                        if (i == 3) {
-                            throw boom;
-                        }
-                    }));
-            assertSame(boom, thrown);
-            assertTrue(started.get() < 10_000, started.get() + " parts started");
-        } finally {
-            pool.shutdown();
-        }
+        IllegalStateException boom = new IllegalStateException("boom");
+        AtomicInteger started = new AtomicInteger();
+        IllegalStateException thrown = assertThrows(IllegalStateException.class,
+                () -> Cancellation.invokeAll(POOLS.get(2), 10_000, (i, c) -> {
+                    started.incrementAndGet();
+                    if (i == 3) {
+                        throw boom;
+                    }
+                }));
+        assertSame(boom, thrown);
+        assertTrue(started.get() < 10_000, started.get() + " parts started");
     }
 
     @Test
@@ -84,7 +73,7 @@ class CancellationTest {
 
     @Test
     void anInterruptEndsTheCallOnlyOnceNoPartRuns() throws InterruptedException {
-        for (ForkJoinPool pool : new ForkJoinPool[] {new ForkJoinPool(2), ForkJoinPool.commonPool()}) {
+        for (ForkJoinPool pool : new ForkJoinPool[] {POOLS.get(2), ForkJoinPool.commonPool()}) {
             AtomicInteger running = new AtomicInteger();
             AtomicInteger runningAtEnd = new AtomicInteger(-1);
             InterruptedRun run = InterruptedRun.of(() -> {
@@ -108,28 +97,21 @@ class CancellationTest {
             assertInstanceOf(CancellationException.class, run.thrown());
             assertTrue(run.interruptStatusAtEnd());
             assertEquals(0, runningAtEnd.get(), "parts still running when the call ended");
-            if (pool != ForkJoinPool.commonPool()) {
-                pool.shutdown();
-            }
         }
     }
 
     @Test
     void isCancelledFollowsTheCallersInterruptStatus() {
-        ForkJoinPool pool = new ForkJoinPool(2);
-        try {
-            boolean[] seen = new boolean[2];
-            Cancellation.invokeAll(pool, 1, (i, c) -> seen[0] = c.isCancelled());
-            assertFalse(seen[0]);
-            Thread caller = Thread.currentThread();
-            assertThrows(CancellationException.class, () -> Cancellation.invokeAll(pool, 1, (i, c) -> {
-                caller.interrupt();
-                seen[1] = c.isCancelled();
-            }));
-            assertTrue(Thread.interrupted(), "the interrupt status stays set");
-            assertTrue(seen[1]);
-        } finally {
-            pool.shutdown();
-        }
+        ForkJoinPool pool = POOLS.get(2);
+        boolean[] seen = new boolean[2];
+        Cancellation.invokeAll(pool, 1, (i, c) -> seen[0] = c.isCancelled());
+        assertFalse(seen[0]);
+        Thread caller = Thread.currentThread();
+        assertThrows(CancellationException.class, () -> Cancellation.invokeAll(pool, 1, (i, c) -> {
+            caller.interrupt();
+            seen[1] = c.isCancelled();
+        }));
+        assertTrue(Thread.interrupted(), "the interrupt status stays set");
+        assertTrue(seen[1]);
     }
 }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.jdem846.testing.SyntheticDems;
 import io.github.jdem846.testing.TestDems;
 import org.junit.jupiter.api.Test;
 
@@ -12,7 +13,7 @@ class DemResamplerTest {
 
     @Test
     void aSizeLargerThanAJavaArrayIsRefusedBeforeAllocating() {
-        Dem dem = TestDems.metric(2, 1, 10, new float[] {1, 2});
+        Dem dem = SyntheticDems.metric(2, 1, 10, new float[] {1, 2});
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> DemResampler.resample(dem, 100_000, 53_718));
         assertTrue(e.getMessage().contains("100000×53718 = 5371800000 cells"), e.getMessage());
@@ -21,7 +22,7 @@ class DemResamplerTest {
     @Test
     void integerShrinkIsTheBlockMeanOfValidCells() {
         float n = Float.NaN;
-        Dem dem = TestDems.metric(4, 2, 10, new float[] {1, 3, n, n, 5, 7, n, 8});
+        Dem dem = SyntheticDems.metric(4, 2, 10, new float[] {1, 3, n, n, 5, 7, n, 8});
         Dem out = DemResampler.resample(dem, 2, 1);
         assertEquals(4f, out.get(0, 0)); // (1+3+5+7)/4
         assertEquals(8f, out.get(1, 0)); // only the valid cell counts
@@ -32,7 +33,7 @@ class DemResamplerTest {
     @Test
     void allNoDataBlockIsNoData() {
         float n = Float.NaN;
-        Dem dem = TestDems.metric(2, 2, 1, new float[] {n, n, n, n});
+        Dem dem = SyntheticDems.metric(2, 2, 1, new float[] {n, n, n, n});
         assertTrue(Float.isNaN(DemResampler.resample(dem, 1, 1).get(0, 0)));
     }
 
@@ -60,7 +61,7 @@ class DemResamplerTest {
                 v[r * 3 + c] = 2 * c + 5 * r;
             }
         }
-        Dem out = DemResampler.resample(TestDems.metric(3, 3, 1, v), 6, 6);
+        Dem out = DemResampler.resample(SyntheticDems.metric(3, 3, 1, v), 6, 6);
         // interior output cell (2, 3): centre at input coordinates x = (2.5)/2 − 0.5 = 0.75, y = 1.25
         assertEquals(2 * 0.75 + 5 * 1.25, out.get(2, 3), 1e-5);
     }

@@ -12,6 +12,7 @@ import io.github.jdem846.shade.IlluminationStage;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowOptions;
 import io.github.jdem846.testing.InterruptedRun;
+import io.github.jdem846.testing.SyntheticDems;
 import io.github.jdem846.testing.TestDems;
 import java.util.HashSet;
 import java.util.Queue;
@@ -42,7 +43,7 @@ class RenderCancellationTest {
     @Test
     void theShadowLayerAloneStopsToo() throws InterruptedException {
         // Soft shadows by the sweep (all levels in one walk of the lines), Big Tujunga mirror-tiled 4 × 4: 1.1–2.5 s.
-        Dem large = TestDems.mirrored(BT, 4);
+        Dem large = SyntheticDems.mirrored(BT, 4 * BT.width(), 4 * BT.height());
         Scene scene = Scene.defaults().withShadows(ShadowAlgorithm.SWEEP).withLight(new LightDirection(300, 5))
                 .withShadowOptions(ShadowOptions.DEFAULTS.withSoftShadows(true));
         assertStopsPromptly(() -> new Renderer(new RenderSettings(2, 256)).shadows(large, scene,

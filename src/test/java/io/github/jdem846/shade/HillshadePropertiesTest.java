@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.testing.SyntheticDems;
 import io.github.jdem846.testing.TestDems;
 import java.util.Random;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -60,12 +61,11 @@ class HillshadePropertiesTest {
     @ParameterizedTest
     @EnumSource(value = HillshadeMethod.class, names = {"JDEM846", "HORN"})
     void rotatingTheDemAndTheAzimuthBy90DegreesRotatesTheResult(HillshadeMethod method) {
-        double cell = 10;
         Dem dem = TestDems.load(TestDems.VOLCANO); // square 10 m cells
-        Dem turned = ShadeTestSupport.rotateClockwise(dem, cell);
+        Dem turned = SyntheticDems.rotateClockwise(dem);
         IlluminationStage stage = method.stage(HillshadeOptions.DEFAULTS);
         for (double az : new double[] {320, 33.3, 180}) {
-            float[] expected = ShadeTestSupport.rotateClockwise(
+            float[] expected = SyntheticDems.rotateClockwise(
                     illuminate(stage, dem, new LightDirection(az, 25)), dem.width(), dem.height());
             float[] actual = illuminate(stage, turned, new LightDirection(az + 90, 25));
             int w = turned.width();

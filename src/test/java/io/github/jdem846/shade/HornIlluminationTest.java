@@ -2,12 +2,12 @@ package io.github.jdem846.shade;
 
 import static io.github.jdem846.shade.ShadeTestSupport.illuminate;
 import static io.github.jdem846.shade.ShadeTestSupport.planeCosine;
-import static io.github.jdem846.shade.ShadeTestSupport.surface;
+import static io.github.jdem846.testing.SyntheticDems.surface;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
-import io.github.jdem846.testing.TestDems;
+import io.github.jdem846.testing.SyntheticDems;
 import org.junit.jupiter.api.Test;
 
 /** Horn and multidirectional against hand-worked planes, including gdaldem's edge and no-data rules. */
@@ -40,7 +40,7 @@ class HornIlluminationTest {
         // A 3×3 plane rising 1 m per 1 m eastward with its east column missing: the window becomes
         // w2 = w5 = w8 = centre, so ∂z/∂east = (4·c − 4·(c − 1)) / 8 = 0.5: half the slope.
         float[] v = {0, 1, Float.NaN, 0, 1, Float.NaN, 0, 1, Float.NaN};
-        Dem dem = TestDems.metric(3, 3, 1, v);
+        Dem dem = SyntheticDems.metric(3, 3, 1, v);
         float[] out = illuminate(HORN, dem, new LightDirection(270, 30));
         assertEquals(planeCosine(0.5, 0, 270, 30), out[4], 1e-6);
         assertEquals(Float.NaN, out[2]);

@@ -2,7 +2,7 @@ package io.github.jdem846.shade;
 
 import static io.github.jdem846.shade.ShadeTestSupport.illuminate;
 import static io.github.jdem846.shade.ShadeTestSupport.planeCosine;
-import static io.github.jdem846.shade.ShadeTestSupport.surface;
+import static io.github.jdem846.testing.SyntheticDems.surface;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -14,6 +14,7 @@ import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.raster.PixelAnchor;
+import io.github.jdem846.testing.SyntheticDems;
 import io.github.jdem846.testing.TestDems;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -28,7 +29,7 @@ class JDem846IlluminationTest {
         float[] v = new float[9 * 7];
         java.util.Arrays.fill(v, 123.25f);
         v[3 * 9 + 4] = Float.NaN;
-        Dem dem = TestDems.metric(9, 7, 30, v);
+        Dem dem = SyntheticDems.metric(9, 7, 30, v);
         for (double e : new double[] {0, 0.01, 25, 45, 89.99, 90}) {
             for (double az : new double[] {0, 90, 180, 270, 320, 33.3}) {
                 float[] out = illuminate(new JDem846Illumination(HillshadeOptions.DEFAULTS), dem,
@@ -119,10 +120,10 @@ class JDem846IlluminationTest {
     @Test
     void isolatedCellsAndOneCellWideGridsGetZeroSlopeAlongTheMissingAxis() {
         // A single cell: no neighbour at all → flat.
-        Dem single = TestDems.metric(1, 1, 30, new float[] {42});
+        Dem single = SyntheticDems.metric(1, 1, 30, new float[] {42});
         assertEquals((float) Math.sin(Math.toRadians(25)), illuminate(STAGE, single, new LightDirection(0, 25))[0]);
         // One row rising 1 m per 1 m eastward: only the east-west slope is known; N–S gets zero slope.
-        Dem row = TestDems.metric(4, 1, 1, new float[] {0, 1, 2, 3});
+        Dem row = SyntheticDems.metric(4, 1, 1, new float[] {0, 1, 2, 3});
         for (float d : illuminate(STAGE, row, new LightDirection(270, 30))) {
             assertEquals(planeCosine(1, 0, 270, 30), d, 1e-6);
         }
@@ -212,7 +213,7 @@ class JDem846IlluminationTest {
             };
         }
         for (double cell : new double[] {0.5, 30}) {
-            Dem dem = TestDems.metric(6, 5, cell, v.clone());
+            Dem dem = SyntheticDems.metric(6, 5, cell, v.clone());
             for (HillshadeMethod m : HillshadeMethod.values()) {
                 for (double z : new double[] {1, HillshadeOptions.MAX_HEIGHT_FACTOR}) {
                     float[] out = illuminate(m.stage(HillshadeOptions.DEFAULTS.withZFactor(z)
@@ -282,7 +283,7 @@ class JDem846IlluminationTest {
 
     @Test
     void badRectanglesAreRejectedWithAMessage() {
-        Dem dem = TestDems.metric(4, 3, 1, new float[12]);
+        Dem dem = SyntheticDems.metric(4, 3, 1, new float[12]);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> STAGE.illuminate(dem, new LightDirection(0, 45), 2, 0, 3, 3, new float[9]));
         assertTrue(e.getMessage().contains("inside the 4×3 DEM"), e.getMessage());

@@ -8,6 +8,7 @@ import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.testing.PoolExtension;
+import io.github.jdem846.testing.SyntheticDems;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
@@ -126,7 +127,7 @@ class ShadowAgreementTest {
                 v[r * w + c] = c == 30 ? 615f : 0f;
             }
         }
-        Dem wall = ShadowTestDems.metric(w, h, 30, v);
+        Dem wall = SyntheticDems.metric(w, h, 30, v);
         LightDirection east45 = new LightDirection(90, 45);
         for (ShadowAlgorithm a : new ShadowAlgorithm[] {ShadowAlgorithm.MARCH, ShadowAlgorithm.SWEEP,
             ShadowAlgorithm.EXACT}) {

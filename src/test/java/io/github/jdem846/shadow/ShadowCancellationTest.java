@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.testing.InterruptedRun;
+import io.github.jdem846.testing.SyntheticDems;
 import io.github.jdem846.testing.TestDems;
 import java.util.List;
 import java.util.concurrent.CancellationException;
@@ -34,7 +35,7 @@ class ShadowCancellationTest {
     private static final double BOUND_MS = 500;
 
     private static final Dem BT = TestDems.load(TestDems.BIG_TUJUNGA);
-    private static final Dem BT_4X4 = TestDems.mirrored(BT, 4);
+    private static final Dem BT_4X4 = SyntheticDems.mirrored(BT, 4 * BT.width(), 4 * BT.height());
 
     /** One way of calling the library on {@code pool} (or on the common pool). */
     @FunctionalInterface
@@ -64,6 +65,7 @@ class ShadowCancellationTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("longComputations")
     void anInterruptStopsTheComputationPromptly(String name, Call call) throws InterruptedException {
+        // a pool of its own, not a PoolExtension: the test records its worker threads and watches them end
         List<Thread> workers = new CopyOnWriteArrayList<>();
         ForkJoinPool pool = new ForkJoinPool(2, p -> {
             ForkJoinWorkerThread t = ForkJoinPool.defaultForkJoinWorkerThreadFactory.newThread(p);

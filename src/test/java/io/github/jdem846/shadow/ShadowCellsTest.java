@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.testing.PoolExtension;
+import io.github.jdem846.testing.SyntheticDems;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -19,12 +20,12 @@ class ShadowCellsTest {
 
     /** A rough DEM with a few no-data cells, so that sampled cells include no-data ones. */
     private static Dem dem() {
-        Dem rough = ShadowTestDems.rough(57, 43, 30, 11, 900);
+        Dem rough = SyntheticDems.rough(57, 43, 30, 11, 900);
         float[] v = rough.backingArray().clone();
         for (int i = 0; i < v.length; i += 37) {
             v[i] = Float.NaN;
         }
-        return ShadowTestDems.metric(57, 43, 30, v);
+        return SyntheticDems.metric(57, 43, 30, v);
     }
 
     private static int[] randomCells(int n, int count, long seed) {

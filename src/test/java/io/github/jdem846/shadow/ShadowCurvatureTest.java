@@ -8,6 +8,7 @@ import io.github.jdem846.io.DemReader;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.testing.PoolExtension;
+import io.github.jdem846.testing.SyntheticDems;
 import java.io.IOException;
 import java.nio.file.Path;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -41,7 +42,7 @@ class ShadowCurvatureTest {
                 v[r * w + c] = (float) wall;
             }
         }
-        Dem dem = ShadowTestDems.metric(w, h, cell, v);
+        Dem dem = SyntheticDems.metric(w, h, cell, v);
         double t = Math.tan(Math.toRadians(1));
         for (boolean curved : new boolean[] {false, true}) {
             double b = curved ? (1 - 0.13) / (2 * 6_371_000.0) : 0;

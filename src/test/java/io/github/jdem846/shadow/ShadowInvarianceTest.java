@@ -29,7 +29,7 @@ class ShadowInvarianceTest {
     private static final ShadowAlgorithm[] ALGORITHMS = {ShadowAlgorithm.MARCH, ShadowAlgorithm.SWEEP,
         ShadowAlgorithm.EXACT};
     @RegisterExtension
-    static final PoolExtension POOL = new PoolExtension(2);
+    static final PoolExtension POOLS = new PoolExtension(1, 2, 3);
     private static Dem bigTujunga;
     private static Dem luxembourg;
     private static Dem jacksboro;
@@ -62,17 +62,13 @@ class ShadowInvarianceTest {
                     for (LightDirection l : soft ? new LightDirection[] {new LightDirection(250, 5)}
                             : new LightDirection[] {new LightDirection(250, 5), new LightDirection(160, 20)}) {
                         float[] one = null;
-                        for (int threads : new int[] {1, 2, 3}) {
-                            ForkJoinPool p = new ForkJoinPool(threads);
-                            try {
-                                float[] m = a.compute(dem, l, o, p).backingArray();
-                                if (one == null) {
-                                    one = m;
-                                } else {
-                                    assertArrayEquals(one, m, a + " soft=" + soft + " " + l + " threads=" + threads);
-                                }
-                            } finally {
-                                p.shutdownNow();
+                        for (ForkJoinPool p : POOLS.all()) {
+                            float[] m = a.compute(dem, l, o, p).backingArray();
+                            if (one == null) {
+                                one = m;
+                            } else {
+                                assertArrayEquals(one, m, a + " soft=" + soft + " " + l + " threads="
+                                        + p.getParallelism());
                             }
                         }
                     }
@@ -95,7 +91,7 @@ class ShadowInvarianceTest {
                 if (reference == null) {
                     reference = argb;
                     referenceShadows = shadows;
-                    assertArrayEquals(a.compute(dem, new LightDirection(250, 6), ShadowOptions.DEFAULTS, POOL.get())
+                    assertArrayEquals(a.compute(dem, new LightDirection(250, 6), ShadowOptions.DEFAULTS, POOLS.get(2))
                             .backingArray(), shadows, a + ": the renderer's shadows are the algorithm's mask");
                 } else {
                     String what = a + " threads=" + setting[0] + " tile=" + setting[1];
@@ -133,9 +129,9 @@ class ShadowInvarianceTest {
                         if (a == ShadowAlgorithm.EXACT && dem == jacksboro && (soft || l.elevationDegrees() != 20)) {
                             continue;
                         }
-                        ShadowMask whole = a.compute(dem, l, o, POOL.get());
+                        ShadowMask whole = a.compute(dem, l, o, POOLS.get(2));
                         for (CellWindow win : windows(dem)) {
-                            ShadowMask part = a.computeWindow(dem, l, o, POOL.get(), win);
+                            ShadowMask part = a.computeWindow(dem, l, o, POOLS.get(2), win);
                             assertEquals(win.width(), part.width());
                             assertEquals(win.height(), part.height());
                             int differ = 0;
@@ -166,7 +162,7 @@ class ShadowInvarianceTest {
                     CellWindow halo = ShadowHalo.window(dem, l, ShadowOptions.DEFAULTS, win);
                     assertTrue(halo.col() <= win.col() && halo.colEnd() >= win.colEnd() && halo.row() <= win.row()
                             && halo.rowEnd() >= win.rowEnd(), "the halo contains the window");
-                    float[] ref = a.computeWindow(dem, l, ShadowOptions.DEFAULTS, POOL.get(), win).backingArray();
+                    float[] ref = a.computeWindow(dem, l, ShadowOptions.DEFAULTS, POOLS.get(2), win).backingArray();
                     float[] v = dem.backingArray().clone();
                     int removed = 0;
                     for (int r = 0; r < dem.height(); r++) {
@@ -178,7 +174,7 @@ class ShadowInvarianceTest {
                         }
                     }
                     Dem masked = new Dem(v, dem.geometry());
-                    float[] m = a.computeWindow(masked, l, ShadowOptions.DEFAULTS, POOL.get(), win).backingArray();
+                    float[] m = a.computeWindow(masked, l, ShadowOptions.DEFAULTS, POOLS.get(2), win).backingArray();
                     assertArrayEquals(ref, m, a + " " + l + " " + win + ": no-data outside the halo (" + removed
                             + " cells)");
                 }

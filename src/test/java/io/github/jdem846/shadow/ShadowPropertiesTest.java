@@ -8,6 +8,7 @@ import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.testing.PoolExtension;
+import io.github.jdem846.testing.SyntheticDems;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -40,7 +41,7 @@ class ShadowPropertiesTest {
         // 160×120 cells of the steepest part (the window of testdata/variants), 614–2095 m
         Dem crop = bt.crop(520, 180, 160, 120);
         real = new Dem(crop.backingArray().clone(), GridGeometry.metric(160, 120, 30));
-        synthetic = ShadowTestDems.rough(64, 48, 30, 11, 800);
+        synthetic = SyntheticDems.rough(64, 48, 30, 11, 800);
     }
 
     /**
@@ -93,7 +94,7 @@ class ShadowPropertiesTest {
         // (sin a, −cos a) onto (−(−cos a), sin a) = that of a + 90°: every sample of every ray lands on the rotated
         // position, so the mask must rotate cell for cell (ties could flip only by rounding of sin/cos, never seen).
         for (Dem dem : new Dem[] {synthetic, real}) {
-            Dem turned = ShadowTestDems.rotateClockwise(dem, 30);
+            Dem turned = SyntheticDems.rotateClockwise(dem);
             for (double az : new double[] {0, 45, 160, 250, 300}) {
                 for (double e : new double[] {5, 20}) {
                     if (v.algorithm() == ShadowAlgorithm.EXACT && dem == real && e == 5 && az != 250) {
@@ -101,7 +102,8 @@ class ShadowPropertiesTest {
                     }
                     ShadowMask m = v.run(dem, az, e);
                     ShadowMask r = v.run(turned, az + 90, e);
-                    int n = differences(ShadowTestDems.rotateClockwise(m), r.backingArray());
+                    float[] turnedMask = SyntheticDems.rotateClockwise(m.backingArray(), m.width(), m.height());
+                    int n = differences(turnedMask, r.backingArray());
                     assertEquals(0, n, v + " on " + (dem == real ? "Big Tujunga" : "synthetic") + " az=" + az
                             + " e=" + e + ": cells that do not rotate with the DEM (of " + m.shadowedCount()
                             + " shadowed)");
@@ -172,8 +174,8 @@ class ShadowPropertiesTest {
         for (boolean soft : new boolean[] {false, true}) {
             ShadowOptions o = v.options().withSoftShadows(soft);
             for (Dem dem : new Dem[] {synthetic, real}) {
-                Dem raised = ShadowTestDems.map(dem, z -> z + 1024);
-                Dem lowered = ShadowTestDems.map(dem, z -> z - 4096);
+                Dem raised = SyntheticDems.map(dem, z -> z + 1024);
+                Dem lowered = SyntheticDems.map(dem, z -> z - 4096);
                 for (double az : OFF_AXIS) {
                     double e = az == 250 ? 5 : 20;
                     if (v.algorithm() == ShadowAlgorithm.EXACT && dem == real && az != 300) {
@@ -199,7 +201,7 @@ class ShadowPropertiesTest {
         boolean articleStep = v.options().step().isArticle() && v.algorithm() == ShadowAlgorithm.MARCH;
         for (Dem dem : new Dem[] {synthetic, real}) {
             for (double k : new double[] {2, 0.5, 4}) {
-                Dem scaled = ShadowTestDems.map(dem, z -> z * k);
+                Dem scaled = SyntheticDems.map(dem, z -> z * k);
                 for (double az : OFF_AXIS) {
                     double e = az == 300 ? 20 : 5;
                     if (v.algorithm() == ShadowAlgorithm.EXACT && dem == real && (k != 2 || az != 160)) {
@@ -259,7 +261,7 @@ class ShadowPropertiesTest {
                 v[r * n + c] = h;
             }
         }
-        return ShadowTestDems.metric(n, n, cell, v);
+        return SyntheticDems.metric(n, n, cell, v);
     }
 
     @ParameterizedTest

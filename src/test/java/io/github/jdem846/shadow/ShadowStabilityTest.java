@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.fail;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.testing.PoolExtension;
+import io.github.jdem846.testing.SyntheticDems;
 import java.time.Duration;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -29,20 +30,20 @@ class ShadowStabilityTest {
 
     static Map<String, Dem> dems() {
         Map<String, Dem> m = new LinkedHashMap<>();
-        m.put("flat", ShadowTestDems.flat(9, 7, 30, 100f));
-        m.put("spike", ShadowTestDems.spike(15, 15, 30, 7, 7, 500f));
+        m.put("flat", SyntheticDems.flat(9, 7, 30, 100f));
+        m.put("spike", SyntheticDems.spike(15, 15, 30, 7, 7, 500f));
         float[] cliff = new float[12 * 12];
         for (int i = 0; i < cliff.length; i++) {
             cliff[i] = (i % 12) >= 6 ? 10_000f : 0f;
         }
-        m.put("10 km cliff, 0.5 m cells", ShadowTestDems.metric(12, 12, 0.5, cliff));
+        m.put("10 km cliff, 0.5 m cells", SyntheticDems.metric(12, 12, 0.5, cliff));
         float[] nd = new float[6 * 5];
         java.util.Arrays.fill(nd, Float.NaN);
-        m.put("all no-data", ShadowTestDems.metric(6, 5, 30, nd));
-        m.put("1x1", ShadowTestDems.metric(1, 1, 30, new float[] {5f}));
-        m.put("1xN", ShadowTestDems.rough(1, 17, 30, 1, 300));
-        m.put("Nx1", ShadowTestDems.rough(17, 1, 30, 2, 300));
-        Dem striped = ShadowTestDems.rough(16, 16, 30, 3, 400);
+        m.put("all no-data", SyntheticDems.metric(6, 5, 30, nd));
+        m.put("1x1", SyntheticDems.metric(1, 1, 30, new float[] {5f}));
+        m.put("1xN", SyntheticDems.rough(1, 17, 30, 1, 300));
+        m.put("Nx1", SyntheticDems.rough(17, 1, 30, 2, 300));
+        Dem striped = SyntheticDems.rough(16, 16, 30, 3, 400);
         float[] sv = striped.backingArray().clone();
         for (int r = 0; r < 16; r++) {
             for (int c = 0; c < 16; c++) {
@@ -51,12 +52,12 @@ class ShadowStabilityTest {
                 }
             }
         }
-        m.put("no-data stripes", ShadowTestDems.metric(16, 16, 30, sv));
-        m.put("rows at 89.9-90", ShadowTestDems.geographic(10, 8, 0, 90, 0.1 / 8,
-                ShadowTestDems.rough(10, 8, 1, 4, 300).backingArray().clone()));
-        m.put("1 degree cells", ShadowTestDems.geographic(10, 10, 5, 50, 1.0,
-                ShadowTestDems.rough(10, 10, 1, 5, 3000).backingArray().clone()));
-        m.put("0.5 m cells", ShadowTestDems.rough(12, 12, 0.5, 6, 5));
+        m.put("no-data stripes", SyntheticDems.metric(16, 16, 30, sv));
+        m.put("rows at 89.9-90", SyntheticDems.geographic(10, 8, 0, 90, 0.1 / 8,
+                SyntheticDems.rough(10, 8, 1, 4, 300).backingArray().clone()));
+        m.put("1 degree cells", SyntheticDems.geographic(10, 10, 5, 50, 1.0,
+                SyntheticDems.rough(10, 10, 1, 5, 3000).backingArray().clone()));
+        m.put("0.5 m cells", SyntheticDems.rough(12, 12, 0.5, 6, 5));
         return m;
     }
 
@@ -140,9 +141,9 @@ class ShadowStabilityTest {
         for (double e : new double[] {1e-6, 0.01, 2, 45, 89.99}) {
             for (double az : AZIMUTHS) {
                 LightDirection l = new LightDirection(az, e);
-                assertEquals(0, algorithm.compute(ShadowTestDems.flat(9, 7, 30, 100f), l, ShadowOptions.DEFAULTS,
+                assertEquals(0, algorithm.compute(SyntheticDems.flat(9, 7, 30, 100f), l, ShadowOptions.DEFAULTS,
                         POOL.get()).shadowedCount(), algorithm + " flat e=" + e + " az=" + az);
-                assertEquals(0, algorithm.compute(ShadowTestDems.metric(1, 1, 30, new float[] {5f}), l,
+                assertEquals(0, algorithm.compute(SyntheticDems.metric(1, 1, 30, new float[] {5f}), l,
                         ShadowOptions.DEFAULTS, POOL.get()).shadowedCount(), algorithm + " 1x1");
             }
         }
@@ -176,7 +177,7 @@ class ShadowStabilityTest {
         for (int r = 0; r < h; r++) {
             v[r * w + 5] = 500f;
         }
-        Dem dem = ShadowTestDems.geographic(w, h, 10, 78.03, 0.01, v);
+        Dem dem = SyntheticDems.geographic(w, h, 10, 78.03, 0.01, v);
         double cellM = dem.geometry().cellWidthMeters(3);
         double expected = 500 / Math.tan(Math.toRadians(5)) / cellM;
         ShadowMask m = algorithm.compute(dem, new LightDirection(270, 5), ShadowOptions.DEFAULTS, POOL.get());
@@ -198,7 +199,7 @@ class ShadowStabilityTest {
         // skirt, plus the sweep's line spacing) and no farther than h/tan e + 2 cells; at 89.99° nothing is shaded
         // (the shadow would be 0.09 m long), at 45° something is. With soft shadows flat ground ahead already hides
         // the part of the sun's disk below 0° (half of it as e → 0): only more than that counts as the spike's.
-        Dem spike = ShadowTestDems.spike(15, 15, 30, 7, 7, 500f);
+        Dem spike = SyntheticDems.spike(15, 15, 30, 7, 7, 500f);
         for (boolean soft : new boolean[] {false, true}) {
             ShadowOptions opt = ShadowOptions.DEFAULTS.withSoftShadows(soft);
             for (double e : new double[] {1e-6, 0.01, 2, 45, 89.99}) {
@@ -249,7 +250,7 @@ class ShadowStabilityTest {
                     v[r * w + c] = x == 30 ? 615f : (x >= 20 && x <= 22 ? Float.NaN : 0f);
                 }
             }
-            Dem dem = ShadowTestDems.metric(w, h, 30, v);
+            Dem dem = SyntheticDems.metric(w, h, 30, v);
             ShadowMask m = algorithm.compute(dem, new LightDirection(mirrored ? 270 : 90, 45),
                     ShadowOptions.DEFAULTS, POOL.get());
             for (int r = 0; r < h; r++) {
@@ -266,8 +267,8 @@ class ShadowStabilityTest {
     @ParameterizedTest
     @EnumSource(value = ShadowAlgorithm.class, names = {"MARCH", "SWEEP", "EXACT"})
     void flatGroundAtThePoleAndOnOneDegreeCellsIsLit(ShadowAlgorithm algorithm) {
-        Dem pole = ShadowTestDems.geographic(10, 8, 0, 90, 0.1 / 8, new float[80]);
-        Dem degrees = ShadowTestDems.geographic(10, 10, 5, 50, 1.0, new float[100]);
+        Dem pole = SyntheticDems.geographic(10, 8, 0, 90, 0.1 / 8, new float[80]);
+        Dem degrees = SyntheticDems.geographic(10, 10, 5, 50, 1.0, new float[100]);
         for (Dem dem : new Dem[] {pole, degrees}) {
             for (double e : new double[] {1e-6, 0.01, 2, 45, 89.99}) {
                 for (double az : AZIMUTHS) {

@@ -12,13 +12,14 @@ import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.raster.PixelAnchor;
+import io.github.jdem846.testing.PoolExtension;
+import io.github.jdem846.testing.SyntheticDems;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Random;
 import java.util.concurrent.ForkJoinPool;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * The soft sweep's one walk over all the disk's elevations ({@code SunSweep.runLevels}) against its definition, hard
@@ -32,21 +33,13 @@ class SoftSweepOneWalkTest {
     private static final double[] AZIMUTHS = {0, 45, 100, 250, 300};
     private static final ShadowOptions HARD = ShadowOptions.DEFAULTS;
 
-    private static ForkJoinPool pool;
-
-    @BeforeAll
-    static void start() {
-        pool = new ForkJoinPool(3);
-    }
-
-    @AfterAll
-    static void stop() {
-        pool.shutdownNow();
-    }
+    @RegisterExtension
+    static final PoolExtension POOL = new PoolExtension(3);
 
     private static int[] assertSameLevels(Dem dem, LightDirection light, CellWindow window) {
         double r = ShadowOptions.DEFAULTS.sunDiameterDegrees() / 2;
         double[] levels = ShadowAlgorithm.softLevels(light.elevationDegrees(), r);
+        ForkJoinPool pool = POOL.get();
         int[] oneWalk = ShadowAlgorithm.highestBlockedInOneWalk(dem, light, HARD, pool, window, levels);
         assertNotNull(oneWalk, "a grid with the default options takes the one walk");
         int[] reference = ShadowAlgorithm.highestBlockedLevelByLevel(dem, light, HARD, pool, window, levels);
@@ -85,7 +78,7 @@ class SoftSweepOneWalkTest {
         for (int t = 0; t < 40; t++) {
             int w = 30 + rnd.nextInt(90);
             int h = 30 + rnd.nextInt(90);
-            Dem dem = ShadowTestDems.rough(w, h, 10 + rnd.nextDouble() * 40, rnd.nextLong(),
+            Dem dem = SyntheticDems.rough(w, h, 10 + rnd.nextDouble() * 40, rnd.nextLong(),
                     50 + rnd.nextDouble() * 400);
             float[] v = dem.backingArray();
             int from = rnd.nextInt(w);
@@ -109,10 +102,11 @@ class SoftSweepOneWalkTest {
 
     @Test
     void otherCasesKeepTheLevelByLevelPath() {
-        Dem metric = ShadowTestDems.rough(60, 50, 30, 7L, 300);
+        Dem metric = SyntheticDems.rough(60, 50, 30, 7L, 300);
         LightDirection light = new LightDirection(250, 5);
         double[] levels = ShadowAlgorithm.softLevels(5, ShadowOptions.DEFAULTS.sunDiameterDegrees() / 2);
         CellWindow whole = CellWindow.whole(60, 50);
+        ForkJoinPool pool = POOL.get();
         assertNull(ShadowAlgorithm.highestBlockedInOneWalk(metric, light, HARD.withEarthCurvature(true), pool, whole,
                 levels), "curvature");
         assertNull(ShadowAlgorithm.highestBlockedInOneWalk(metric, light, HARD.withThinFeatures(true), pool, whole,

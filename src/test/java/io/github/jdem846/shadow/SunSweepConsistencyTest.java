@@ -10,15 +10,15 @@ import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.raster.PixelAnchor;
+import io.github.jdem846.testing.PoolExtension;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.ForkJoinPool;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * The sweep's fast path (a block of lines walked in lockstep, hard shadows on uniform projected grids) against its
@@ -36,23 +36,8 @@ class SunSweepConsistencyTest {
     private static final double[] ELEVATIONS = {2, 5, 20, 45};
     private static final double[] AZIMUTHS = {0, 45, 90, 160, 250, 300, 359.999};
 
-    private static ForkJoinPool one;
-    private static ForkJoinPool two;
-    private static ForkJoinPool three;
-
-    @BeforeAll
-    static void start() {
-        one = new ForkJoinPool(1);
-        two = new ForkJoinPool(2);
-        three = new ForkJoinPool(3);
-    }
-
-    @AfterAll
-    static void stop() {
-        one.shutdownNow();
-        two.shutdownNow();
-        three.shutdownNow();
-    }
+    @RegisterExtension
+    static final PoolExtension POOLS = new PoolExtension(1, 2, 3);
 
     private static Dem real(String name) throws IOException {
         return DemReader.read(Path.of("testdata/dem/" + name + ".flt"));
@@ -89,12 +74,12 @@ class SunSweepConsistencyTest {
                 for (double a : AZIMUTHS) {
                     LightDirection light = new LightDirection(a, e);
                     for (ShadowOptions o : new ShadowOptions[] {ShadowOptions.DEFAULTS, THIN}) {
-                        float[] fast = sweep(dem, light, o, true, two);
-                        float[] reference = sweep(dem, light, o, false, one);
+                        float[] fast = sweep(dem, light, o, true, POOLS.get(2));
+                        float[] reference = sweep(dem, light, o, false, POOLS.get(1));
                         assertEquals(0, differences(fast, reference), name + " az " + a + " el " + e + " thin "
                                 + o.thinFeatures());
                     }
-                    float[] fast = sweep(dem, light, ShadowOptions.DEFAULTS, true, two);
+                    float[] fast = sweep(dem, light, ShadowOptions.DEFAULTS, true, POOLS.get(2));
                     for (float s : fast) {
                         shadowed += s >= 0.5f ? 1 : 0;
                     }
@@ -146,8 +131,8 @@ class SunSweepConsistencyTest {
 
     private static void assertLockstepEqualsLineByLine(Dem dem, LightDirection light, int t) {
         for (ShadowOptions o : new ShadowOptions[] {ShadowOptions.DEFAULTS, THIN}) {
-            float[] fast = sweep(dem, light, o, true, three);
-            float[] reference = sweep(dem, light, o, false, one);
+            float[] fast = sweep(dem, light, o, true, POOLS.get(3));
+            float[] reference = sweep(dem, light, o, false, POOLS.get(1));
             assertEquals(0, differences(fast, reference), "trial " + t + " " + light + " thin "
                     + o.thinFeatures() + " on " + dem.geometry());
         }
@@ -165,9 +150,9 @@ class SunSweepConsistencyTest {
         for (double a : new double[] {0, 45, 90, 180, 270}) {
             for (double e : new double[] {5, 20}) {
                 LightDirection light = new LightDirection(a, e);
-                ShadowMask sweep = ShadowAlgorithm.SWEEP.compute(dem, light, nearest, two);
+                ShadowMask sweep = ShadowAlgorithm.SWEEP.compute(dem, light, nearest, POOLS.get(2));
                 ShadowMask march = ShadowAlgorithm.MARCH.compute(dem, light, nearest.withStep(StepSize.ONE_CELL),
-                        two);
+                        POOLS.get(2));
                 assertEquals(0, differences(sweep.backingArray(), march.backingArray()), "az " + a + " el " + e);
                 shadowed += march.shadowedCount();
             }
@@ -182,9 +167,9 @@ class SunSweepConsistencyTest {
                 ShadowOptions.DEFAULTS.withEarthCurvature(true))) {
             for (double a : new double[] {160, 300}) {
                 LightDirection light = new LightDirection(a, 5);
-                float[] m1 = ShadowAlgorithm.SWEEP.compute(dem, light, options, one).backingArray();
-                float[] m2 = ShadowAlgorithm.SWEEP.compute(dem, light, options, two).backingArray();
-                float[] m3 = ShadowAlgorithm.SWEEP.compute(dem, light, options, three).backingArray();
+                float[] m1 = ShadowAlgorithm.SWEEP.compute(dem, light, options, POOLS.get(1)).backingArray();
+                float[] m2 = ShadowAlgorithm.SWEEP.compute(dem, light, options, POOLS.get(2)).backingArray();
+                float[] m3 = ShadowAlgorithm.SWEEP.compute(dem, light, options, POOLS.get(3)).backingArray();
                 assertEquals(0, differences(m1, m2), options + " az " + a);
                 assertEquals(0, differences(m1, m3), options + " az " + a);
             }
@@ -238,13 +223,13 @@ class SunSweepConsistencyTest {
         for (int t = 0; t < 300; t++) {
             for (FileWindowCase c : FileWindowCase.random(rnd, 8)) {
                 ShadowOptions told = ShadowOptions.DEFAULTS.withTerrainMinimum(c.dem().statistics().min());
-                assertEquals(0, c.differences(told, t % 2 == 0 ? one : two), "trial " + t + " " + c.light() + " "
-                        + c.window());
+                ForkJoinPool pool = t % 2 == 0 ? POOLS.get(1) : POOLS.get(2);
+                assertEquals(0, c.differences(told, pool), "trial " + t + " " + c.light() + " " + c.window());
                 if (t % 4 == 0) {
-                    assertEquals(0, c.differences(told.withThinFeatures(true), two), "thin features, trial " + t
-                            + " " + c.light() + " " + c.window());
+                    assertEquals(0, c.differences(told.withThinFeatures(true), POOLS.get(2)), "thin features, trial "
+                            + t + " " + c.light() + " " + c.window());
                 }
-                sensitive += c.differences(ShadowOptions.DEFAULTS, one) > 0 ? 1 : 0;
+                sensitive += c.differences(ShadowOptions.DEFAULTS, POOLS.get(1)) > 0 ? 1 : 0;
             }
         }
         assertTrue(sensitive > 0, "some trials must depend on the file's minimum");
@@ -252,15 +237,15 @@ class SunSweepConsistencyTest {
 
     private static void assertWindowsMatch(Dem dem, LightDirection light, ShadowOptions options, Random rnd,
                                            int windows, String what) {
-        ShadowMask whole = ShadowAlgorithm.SWEEP.compute(dem, light, options, two);
+        ShadowMask whole = ShadowAlgorithm.SWEEP.compute(dem, light, options, POOLS.get(2));
         int width = dem.width();
         int height = dem.height();
         for (int q = 0; q < windows; q++) {
             int w = 1 + rnd.nextInt(width);
             int h = 1 + rnd.nextInt(height);
             CellWindow window = new CellWindow(rnd.nextInt(width - w + 1), rnd.nextInt(height - h + 1), w, h);
-            ShadowMask part = ShadowAlgorithm.SWEEP.computeWindow(dem, light, options, q % 2 == 0 ? one : two,
-                    window);
+            ForkJoinPool pool = q % 2 == 0 ? POOLS.get(1) : POOLS.get(2);
+            ShadowMask part = ShadowAlgorithm.SWEEP.computeWindow(dem, light, options, pool, window);
             List<String> bad = new ArrayList<>();
             for (int r = 0; r < h; r++) {
                 for (int c = 0; c < w; c++) {

@@ -8,6 +8,7 @@ import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.testing.PoolExtension;
+import io.github.jdem846.testing.SyntheticDems;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -44,7 +45,7 @@ class SunSweepEdgeTest {
         for (int[] s : spikes) {
             v[s[1] * n + s[0]] = 600f;
         }
-        Dem dem = ShadowTestDems.metric(n, n, 30, v);
+        Dem dem = SyntheticDems.metric(n, n, 30, v);
         int constrained = 0;
         long shaded = 0;
         List<String> wrong = new ArrayList<>();

@@ -71,24 +71,4 @@ public final class TestDems {
             default -> CrsInfo.geographic("WGS 84", 4326, Ellipsoid.WGS84);
         };
     }
-
-    /** A DEM made in memory on a metric grid with square cells of {@code cellSize} metres. */
-    public static Dem metric(int width, int height, double cellSize, float[] values) {
-        return new Dem(values, GridGeometry.metric(width, height, cellSize));
-    }
-
-    /** {@code dem} mirror-tiled {@code n × n} (no seam is a cliff) on a metric grid of its cell size. */
-    public static Dem mirrored(Dem dem, int n) {
-        int w = dem.width();
-        int h = dem.height();
-        float[] v = dem.backingArray();
-        float[] out = new float[n * w * n * h];
-        for (int r = 0; r < n * h; r++) {
-            int rr = r / h % 2 == 0 ? r % h : h - 1 - r % h;
-            for (int c = 0; c < n * w; c++) {
-                out[r * n * w + c] = v[rr * w + (c / w % 2 == 0 ? c % w : w - 1 - c % w)];
-            }
-        }
-        return new Dem(out, GridGeometry.metric(n * w, n * h, dem.geometry().cellWidth()));
-    }
 }

@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.testing.SyntheticDems;
 import io.github.jdem846.testing.TestDems;
 import java.util.List;
 import java.util.Random;
@@ -97,7 +98,7 @@ class ColorRampTest {
 
     @Test
     void flatDemIsColouredAsZeroPercent() {
-        Dem flat = TestDems.metric(4, 3, 30, new float[] {512, 512, 512, 512, 512, 512, 512, 512, 512, 512, 512,
+        Dem flat = SyntheticDems.metric(4, 3, 30, new float[] {512, 512, 512, 512, 512, 512, 512, 512, 512, 512, 512,
             Float.NaN});
         TintFunction tint = ColorRamp.named("hypsometric").bind(flat);
         for (int row = 0; row < 3; row++) {
@@ -121,7 +122,7 @@ class ColorRampTest {
 
     @Test
     void allNoDataDemBindsAndStaysTransparent() {
-        Dem empty = TestDems.metric(2, 1, 30, new float[] {Float.NaN, Float.NaN});
+        Dem empty = SyntheticDems.metric(2, 1, 30, new float[] {Float.NaN, Float.NaN});
         for (String name : ColorRamp.names()) {
             TintFunction tint = ColorRamp.named(name).bind(empty);
             assertEquals(0, tint.argb(Float.NaN), name);
