@@ -65,13 +65,13 @@ class CogGdalTest {
     @Test
     void gdalReadsACogWithGdalsOverviewsOurGeoreferencingAndPixels() throws IOException {
         assumeTrue(ExternalTools.onPath("gdalinfo") && ExternalTools.onPath("gdal_translate"), "gdal-bin absent");
-        int w = RELIEF.width;
-        int h = RELIEF.height;
+        int w = RELIEF.width();
+        int h = RELIEF.height();
         Path strips = dir.resolve("strips.tif");
         Path cog = dir.resolve("cog.tif");
         WriteOptions noData = WriteOptions.defaults().withNoData(0);
-        ImageOutput.writeGray(strips, RELIEF.gray, w, h, GEO, noData);
-        ImageOutput.writeGray(cog, RELIEF.gray, w, h, GEO, COG.withNoData(0));
+        ImageOutput.writeGray(strips, RELIEF.gray(), w, h, GEO, noData);
+        ImageOutput.writeGray(cog, RELIEF.gray(), w, h, GEO, COG.withNoData(0));
         Path gdalsCog = dir.resolve("gdal-cog.tif");
         ExternalTools.Result translated = ExternalTools.run(List.of("gdal_translate", "-q", "-of", "COG", "-co",
                 "BLOCKSIZE=" + CogOutputTest.TILE, strips.toString(), gdalsCog.toString()));
@@ -94,7 +94,7 @@ class CogGdalTest {
         List<Object> checksums = overviews(band, "checksum");
         for (int k = 1; k <= 4; k++) {
             Path means = dir.resolve("means" + k + ".tif");
-            int[] expected = CogOutputTest.grayMeans(RELIEF.gray, w, h, k, 0);
+            int[] expected = CogOutputTest.grayMeans(RELIEF.gray(), w, h, k, 0);
             byte[] bytes = new byte[expected.length];
             for (int i = 0; i < bytes.length; i++) {
                 bytes[i] = (byte) expected[i];
@@ -108,8 +108,8 @@ class CogGdalTest {
     @Test
     void gdalReadsRgbaCogsClassicAndBig() throws IOException {
         assumeTrue(ExternalTools.onPath("gdalinfo"), "gdal-bin absent");
-        int w = RELIEF.width;
-        int h = RELIEF.height;
+        int w = RELIEF.width();
+        int h = RELIEF.height();
         int[] argb = CogOutputTest.rgba();
         Path strips = dir.resolve("strips.tif");
         ImageOutput.writeRgba(strips, argb, w, h, GEO, WriteOptions.defaults());
@@ -148,10 +148,10 @@ class CogGdalTest {
         }
         assumeTrue(python != null, "Python's GDAL bindings (osgeo_utils) absent");
         Path gray = dir.resolve("gray.tif");
-        ImageOutput.writeGray(gray, RELIEF.gray, RELIEF.width, RELIEF.height, GEO, COG.withNoData(0));
+        ImageOutput.writeGray(gray, RELIEF.gray(), RELIEF.width(), RELIEF.height(), GEO, COG.withNoData(0));
         Path big = dir.resolve("big.tif");
-        try (FileImageSink sink = FileImageSink.open(big, RELIEF.width, RELIEF.height, 4, 8, GEO, COG, null, 1000)) {
-            sink.appendRgba(CogOutputTest.rgba(), RELIEF.height);
+        try (FileImageSink sink = FileImageSink.open(big, RELIEF.width(), RELIEF.height(), 4, 8, GEO, COG, null, 1000)) {
+            sink.appendRgba(CogOutputTest.rgba(), RELIEF.height());
             sink.commit();
         }
         for (Path file : List.of(gray, big)) {

@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.twelvemonkeys.imageio.plugins.tiff.TIFFImageReaderSpi;
+import io.github.jdem846.testing.SyntheticDems;
+import io.github.jdem846.testing.SyntheticDems.ShadedRelief;
 import io.github.jdem846.testing.TestDems;
 import java.awt.image.Raster;
 import java.io.IOException;
@@ -35,7 +37,7 @@ class CogOutputTest {
 
     static final int TILE = 32;
     /** 300 × 203 at tiles of 32: overviews 150×101, 75×50, 37×25, 18×12 (as gdal_translate -of COG makes them). */
-    static final SyntheticRelief RELIEF = new SyntheticRelief(300, 203, 7);
+    static final ShadedRelief RELIEF = SyntheticDems.shadedRelief(300, 203, 7);
     static final WriteOptions COG = WriteOptions.defaults().withTiffLayout(WriteOptions.TiffLayout.COG)
             .withCogTileSize(TILE);
 
@@ -44,10 +46,10 @@ class CogOutputTest {
 
     /** The relief's colours with partial alphas, and transparent pixels whose colour bits are not 0. */
     static int[] rgba() {
-        int[] argb = RELIEF.argb.clone();
+        int[] argb = RELIEF.argb().clone();
         for (int i = 0; i < argb.length; i++) {
-            int x = i % RELIEF.width;
-            int y = i / RELIEF.width;
+            int x = i % RELIEF.width();
+            int y = i / RELIEF.width();
             if ((x + 2 * y) % 5 == 0) {
                 argb[i] = ((x * 37 + y * 11) & 0xFF) << 24 | (argb[i] & 0xFFFFFF);
             } else if (argb[i] == 0 && (x + y) % 3 == 0) {
@@ -60,7 +62,7 @@ class CogOutputTest {
     @Test
     void grayCogHasTilesOverviewsAndBoxMeansWithoutNoData() throws IOException {
         Path file = dir.resolve("shade.tif");
-        ImageOutput.writeGray(file, RELIEF.gray, RELIEF.width, RELIEF.height, GEO, COG.withNoData(0));
+        ImageOutput.writeGray(file, RELIEF.gray(), RELIEF.width(), RELIEF.height(), GEO, COG.withNoData(0));
         List<Raster> levels = readLevels(file, 1);
         int[][] sizes = {{300, 203}, {150, 101}, {75, 50}, {37, 25}, {18, 12}};
         assertEquals(sizes.length, levels.size(), "full resolution and four overviews");
@@ -68,11 +70,11 @@ class CogOutputTest {
             Raster level = levels.get(k);
             assertEquals(sizes[k][0], level.getWidth(), "width of level " + k);
             assertEquals(sizes[k][1], level.getHeight(), "height of level " + k);
-            int[] expected = grayMeans(RELIEF.gray, RELIEF.width, RELIEF.height, k, 0);
+            int[] expected = grayMeans(RELIEF.gray(), RELIEF.width(), RELIEF.height(), k, 0);
             assertArrayEquals(expected, level.getSamples(0, 0, level.getWidth(), level.getHeight(), 0, (int[]) null),
                     "level " + k);
         }
-        long valid = Arrays.stream(grayMeans(RELIEF.gray, RELIEF.width, RELIEF.height, 2, 0)).filter(v -> v != 0)
+        long valid = Arrays.stream(grayMeans(RELIEF.gray(), RELIEF.width(), RELIEF.height(), 2, 0)).filter(v -> v != 0)
                 .count();
         assertTrue(valid > 0 && valid < 75 * 50, "the overview has valid and no-data pixels: " + valid);
     }
@@ -80,11 +82,11 @@ class CogOutputTest {
     @Test
     void rgbaCogStreamedInBandsAveragesColourByAlpha() throws IOException {
         int[] argb = rgba();
-        int w = RELIEF.width;
+        int w = RELIEF.width();
         Path file = dir.resolve("relief.tif");
-        try (ImageSink sink = ImageOutput.openRgba(file, w, RELIEF.height, GEO, COG)) {
-            for (int y = 0; y < RELIEF.height; y += 10) {
-                int n = Math.min(10, RELIEF.height - y);
+        try (ImageSink sink = ImageOutput.openRgba(file, w, RELIEF.height(), GEO, COG)) {
+            for (int y = 0; y < RELIEF.height(); y += 10) {
+                int n = Math.min(10, RELIEF.height() - y);
                 sink.appendRgba(Arrays.copyOfRange(argb, y * w, (y + n) * w), n);
             }
             sink.commit();
@@ -93,7 +95,7 @@ class CogOutputTest {
         assertEquals(5, levels.size());
         for (int k = 0; k < levels.size(); k++) {
             Raster level = levels.get(k);
-            int[] expected = argbMeans(argb, w, RELIEF.height, k);
+            int[] expected = argbMeans(argb, w, RELIEF.height(), k);
             for (int b = 0; b < 4; b++) {
                 int shift = b == 3 ? 24 : 16 - 8 * b;
                 int[] channel = Arrays.stream(expected).map(p -> p >>> shift & 0xFF).toArray();
@@ -107,7 +109,7 @@ class CogOutputTest {
     @Test
     void layoutIsGdalsIfdsFirstThenTilesSmallestLevelFirst() throws IOException {
         Path file = dir.resolve("shade.tif");
-        ImageOutput.writeGray(file, RELIEF.gray, RELIEF.width, RELIEF.height, null, COG);
+        ImageOutput.writeGray(file, RELIEF.gray(), RELIEF.width(), RELIEF.height(), null, COG);
         Tiff tiff = Tiff.read(file);
         assertEquals(42, tiff.version);
         String ghost = new String(tiff.bytes, 8, 43 + 140, StandardCharsets.US_ASCII);
@@ -148,13 +150,13 @@ class CogOutputTest {
     /** A tiny threshold forces BigTIFF: strips and COG alike, read back by TwelveMonkeys with every pixel. */
     @Test
     void bigTiffWhenForcedHoldsTheSamePixels() throws IOException {
-        int w = RELIEF.width;
-        int h = RELIEF.height;
+        int w = RELIEF.width();
+        int h = RELIEF.height();
         for (WriteOptions options : List.of(WriteOptions.defaults(), COG)) {
             boolean cog = options.tiffLayout() == WriteOptions.TiffLayout.COG;
             Path big = dir.resolve(cog ? "big-cog.tif" : "big-strips.tif");
             try (FileImageSink sink = FileImageSink.open(big, w, h, 4, 8, GEO, options, null, 1000)) {
-                sink.appendRgba(RELIEF.argb, h);
+                sink.appendRgba(RELIEF.argb(), h);
                 sink.commit();
             }
             Tiff tiff = Tiff.read(big);
@@ -167,11 +169,11 @@ class CogOutputTest {
             Raster raster = TiffTags.raster(big);
             for (int b = 0; b < 4; b++) {
                 int shift = b == 3 ? 24 : 16 - 8 * b;
-                assertArrayEquals(Arrays.stream(RELIEF.argb).map(p -> p >>> shift & 0xFF).toArray(),
+                assertArrayEquals(Arrays.stream(RELIEF.argb()).map(p -> p >>> shift & 0xFF).toArray(),
                         raster.getSamples(0, 0, w, h, b, (int[]) null), big + " band " + b);
             }
             Path classic = dir.resolve(cog ? "classic-cog.tif" : "classic-strips.tif");
-            ImageOutput.writeRgba(classic, RELIEF.argb, w, h, GEO, options);
+            ImageOutput.writeRgba(classic, RELIEF.argb(), w, h, GEO, options);
             assertEquals(42, Tiff.read(classic).version);
         }
     }

@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.jdem846.testing.SyntheticDems;
+import io.github.jdem846.testing.SyntheticDems.ShadedRelief;
 import io.github.jdem846.testing.TestDems;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -30,9 +32,9 @@ class StreamingSinkTest {
     @TempDir
     Path dir;
 
-    private static final SyntheticRelief WIDE = new SyntheticRelief(600, 1000, 3);
-    private static final SyntheticRelief SQUARE = new SyntheticRelief(1500, 1500, 4);
-    private static final SyntheticRelief SMALL = new SyntheticRelief(300, 203, 5);
+    private static final ShadedRelief WIDE = SyntheticDems.shadedRelief(600, 1000, 3);
+    private static final ShadedRelief SQUARE = SyntheticDems.shadedRelief(1500, 1500, 4);
+    private static final ShadedRelief SMALL = SyntheticDems.shadedRelief(300, 203, 5);
 
     /** How to cut a picture of {@code height} rows into bands. */
     private record Cut(String name, int[] bands) {
@@ -81,16 +83,16 @@ class StreamingSinkTest {
 
     @ParameterizedTest(name = "{0} {1}×… rgba={2}")
     @MethodSource("pictures")
-    void anyCutIntoBandsWritesTheWholePicturesBytes(String ext, SyntheticRelief relief, boolean rgba,
+    void anyCutIntoBandsWritesTheWholePicturesBytes(String ext, ShadedRelief relief, boolean rgba,
                                                      WriteOptions options, int chunkRows) throws IOException {
         GeoReference geo = GeoReference.of(TestDems.load(TestDems.BIG_TUJUNGA).geometry());
-        int w = relief.width;
-        int h = relief.height;
+        int w = relief.width();
+        int h = relief.height();
         Path whole = dir.resolve("whole." + ext);
         if (rgba) {
-            ImageOutput.writeRgba(whole, relief.argb, w, h, geo, options);
+            ImageOutput.writeRgba(whole, relief.argb(), w, h, geo, options);
         } else {
-            ImageOutput.writeGray(whole, relief.gray, w, h, geo, options);
+            ImageOutput.writeGray(whole, relief.gray(), w, h, geo, options);
         }
         byte[] expected = Files.readAllBytes(whole);
         assertTrue(chunkRows > 1 && chunkRows < h / 2, "more than two chunks of several rows: " + chunkRows);
@@ -105,10 +107,10 @@ class StreamingSinkTest {
                     Arrays.fill(band, 0x5A5A5A5A);                         // what is left of the last band is garbage
                     Arrays.fill(grayBand, (byte) 0x5A);
                     if (rgba) {
-                        System.arraycopy(relief.argb, y * w, band, 0, n * w);
+                        System.arraycopy(relief.argb(), y * w, band, 0, n * w);
                         sink.appendRgba(band, n);
                     } else {
-                        System.arraycopy(relief.gray, y * w, grayBand, 0, n * w);
+                        System.arraycopy(relief.gray(), y * w, grayBand, 0, n * w);
                         sink.appendGray(grayBand, n);
                     }
                     y += n;
