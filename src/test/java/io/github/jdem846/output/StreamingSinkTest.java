@@ -49,7 +49,6 @@ class StreamingSinkTest {
         cuts.add(new Cut("1 row", fill(height, 1)));
         cuts.add(new Cut("7 rows", fill(height, 7)));
         cuts.add(new Cut("chunk + 3 rows (" + (chunkRows + 3) + ")", fill(height, chunkRows + 3)));
-        cuts.add(new Cut("2.5 chunks", fill(height, chunkRows * 5 / 2)));
         Random random = new Random(height);
         List<Integer> bands = new ArrayList<>();
         for (int left = height; left > 0; ) {
