@@ -29,8 +29,8 @@ import java.util.List;
  * stored blocks) plus the header and IFD. Deciding later would move every strip, since the first strip follows an
  * 8-byte classic header but a 16-byte BigTIFF one. The bound makes the choice depend only on the image size and
  * sample layout, never on the content, so a picture always gets the same format, streamed or not; the price is
- * that a picture whose raw samples pass about 4 GiB is a BigTIFF even when it would compress below 4 GiB (GDAL's
- * {@code BIGTIFF=IF_SAFER} makes the same choice).
+ * that a picture whose raw samples pass about 4 GiB is a BigTIFF even when it would compress below 4 GiB (a cautious
+ * choice like GDAL's {@code BIGTIFF=IF_SAFER}).
  */
 final class GeoTiffWriter implements BandEncoder {
 
