@@ -106,7 +106,7 @@ class CogGdalTest {
     }
 
     @Test
-    void gdalReadsRgbaCogsClassicAndBig() throws IOException {
+    void gdalReadsRgbaCogsClassicAndBigAndBigStrips() throws IOException {
         assumeTrue(ExternalTools.onPath("gdalinfo"), "gdal-bin absent");
         int w = RELIEF.width();
         int h = RELIEF.height();
@@ -116,19 +116,28 @@ class CogGdalTest {
         Path cog = dir.resolve("cog.tif");
         ImageOutput.writeRgba(cog, argb, w, h, GEO, COG);
         Path big = dir.resolve("big.tif");
-        try (FileImageSink sink = FileImageSink.open(big, w, h, 4, 8, GEO, COG, null, 1000)) {
-            sink.appendRgba(argb, h);
-            sink.commit();
+        Path bigStrips = dir.resolve("big-strips.tif");
+        for (Path file : List.of(big, bigStrips)) {
+            WriteOptions options = file == big ? COG : WriteOptions.defaults();
+            try (FileImageSink sink = FileImageSink.open(file, w, h, 4, 8, GEO, options, null, 1000)) {
+                sink.appendRgba(argb, h);
+                sink.commit();
+            }
         }
-        List<Map<String, Object>> reference = bands(gdalinfo(strips));
-        for (Path file : List.of(cog, big)) {
+        Map<String, Object> strip = gdalinfo(strips);
+        List<Map<String, Object>> reference = bands(strip);
+        for (Path file : List.of(cog, big, bigStrips)) {
             Map<String, Object> info = gdalinfo(file);
-            assertEquals("COG", imageStructure(info, "LAYOUT"), file.toString());
+            if (file != bigStrips) {
+                assertEquals("COG", imageStructure(info, "LAYOUT"), file.toString());
+            }
+            assertEquals(strip.get("geoTransform"), info.get("geoTransform"), file.toString());
             assertEquals(4, bands(info).size());
             assertEquals("Alpha", bands(info).get(3).get("colorInterpretation"));
             for (int b = 0; b < 4; b++) {
                 assertEquals(reference.get(b).get("checksum"), bands(info).get(b).get("checksum"), file + " " + b);
-                assertEquals(4, overviews(bands(info).get(b), "size").size());
+                assertEquals(file == bigStrips ? 0 : 4, bands(info).get(b).containsKey("overviews")
+                        ? overviews(bands(info).get(b), "size").size() : 0);
             }
         }
     }
