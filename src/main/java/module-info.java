@@ -22,6 +22,7 @@ module io.github.jdem846 {
     exports io.github.jdem846.shade;
     exports io.github.jdem846.shadow;
     exports io.github.jdem846.sun;
+    exports io.github.jdem846.tiles;
     exports io.github.jdem846.tint;
 
     // BufferedImage and RenderedImage in the API; ImageIO for reading and writing

@@ -1,10 +1,13 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.WriteOptions;
 import java.nio.file.Path;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
-/** {@code -o OUT} and {@code --world-file}: where and how the picture is written (atomically). */
+/** {@code -o OUT}, {@code --world-file} and {@code --cog}: where and how the picture is written (atomically). */
 public final class OutputOptions {
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT",
@@ -17,14 +20,32 @@ public final class OutputOptions {
                     + "places the image (a GeoTIFF carries its georeferencing anyway).")
     boolean worldFile;
 
+    @Option(names = "--cog",
+            description = "Write the GeoTIFF as a Cloud-Optimized GeoTIFF: 512×512 tiles, Deflate, overviews "
+                    + "(gdalinfo reports LAYOUT=COG). Only with a .tif/.tiff output.")
+    boolean cog;
+
     @Option(names = {"-q", "--quiet"}, description = "No progress bar.")
     boolean quiet;
 
-    /** The write options these flags describe; {@code execution} decides whether compression may use all cores. */
+    /** The command these options belong to, for usage errors (null when built by hand). */
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec mixee;
+
+    /**
+     * The write options these flags describe; {@code execution} decides whether compression may use all cores.
+     *
+     * @throws picocli.CommandLine.ParameterException for {@code --cog} with an output that is not a GeoTIFF
+     */
     WriteOptions writeOptions(ExecutionOptions execution) {
-        return WriteOptions.defaults()
+        WriteOptions options = WriteOptions.defaults()
                 .withSidecars(worldFile ? WriteOptions.Sidecars.ALWAYS : WriteOptions.Sidecars.NONE)
-                .withParallelCompression(execution.threads() > 1);
+                .withParallelCompression(execution.threads() > 1)
+                .withTiffLayout(cog ? WriteOptions.TiffLayout.COG : WriteOptions.TiffLayout.STRIPS);
+        if (cog && output != null && mixee != null) {
+            Usage.check(mixee, "--cog", () -> ImageOutput.filesWritten(output, options));
+        }
+        return options;
     }
 
     /** The output path. */

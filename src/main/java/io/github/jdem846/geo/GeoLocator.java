@@ -26,6 +26,7 @@ public final class GeoLocator {
     private static final int EDGE_SAMPLES = 32;
 
     private final MathTransform toLonLat; // null = identity (geographic)
+    private volatile MathTransform fromLonLat; // its inverse, built on first use
 
     private GeoLocator(MathTransform toLonLat) {
         this.toLonLat = toLonLat;
@@ -73,6 +74,48 @@ public final class GeoLocator {
                     + e.getMessage(), e);
         }
         return new LatLon(p[1], p[0]);
+    }
+
+    /**
+     * World positions of longitude/latitude points, in place: {@code points} holds λ0, φ0, λ1, φ1, … (degrees)
+     * and receives x0, y0, x1, y1, … in the CRS's units; the identity for a geographic CRS. A point the projection
+     * cannot take becomes (NaN, NaN).
+     *
+     * @param points the points, two values each
+     * @param count  how many points
+     */
+    public void fromLonLat(double[] points, int count) {
+        if (toLonLat == null) {
+            return;
+        }
+        MathTransform t = fromLonLat;
+        if (t == null) {
+            try {
+                t = toLonLat.inverse();
+            } catch (org.opengis.referencing.operation.NoninvertibleTransformException e) {
+                java.util.Arrays.fill(points, 0, 2 * count, Double.NaN);
+                return;
+            }
+            fromLonLat = t;
+        }
+        double[] in = java.util.Arrays.copyOf(points, 2 * count);
+        try {
+            t.transform(in, 0, points, 0, count);
+        } catch (TransformException batchFailed) {
+            double[] p = new double[2];
+            for (int i = 0; i < 2 * count; i += 2) {
+                p[0] = in[i];
+                p[1] = in[i + 1];
+                try {
+                    t.transform(p, 0, p, 0, 1);
+                } catch (TransformException outsideDomain) {
+                    p[0] = Double.NaN;
+                    p[1] = Double.NaN;
+                }
+                points[i] = p[0];
+                points[i + 1] = p[1];
+            }
+        }
     }
 
     /**

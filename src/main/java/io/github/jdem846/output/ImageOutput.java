@@ -1,18 +1,15 @@
 package io.github.jdem846.output;
 
-import io.github.jdem846.geo.CrsInfo;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
-import java.util.Optional;
 
 /**
  * Writes the renderer's products as image files, the format chosen from the file extension ({@link ImageFormat}):
- * PNG ({@code .png}) or GeoTIFF ({@code .tif}, {@code .tiff}).
+ * PNG ({@code .png}) or GeoTIFF ({@code .tif}, {@code .tiff}; in strips or as a Cloud-Optimized GeoTIFF,
+ * {@link WriteOptions#tiffLayout()}), the whole picture at once or band of rows by band of rows ({@link ImageSink}).
  *
  * <p>Writing is all or nothing: the image and its sidecars are written to temporary files in the target directory
  * and renamed into place only when all are complete, the image first; on any failure the temporary files are
@@ -49,6 +46,7 @@ public final class ImageOutput {
     public static WriteResult writeRgba(Path file, int[] argb, int width, int height, GeoReference geo,
                                         WriteOptions options) throws IOException {
         Objects.requireNonNull(argb, "argb");
+        Rasters.checkLength(argb.length, width, height);
         return write(file, new Pixels.Argb(argb, width, height), geo, options, null);
     }
 
@@ -70,11 +68,8 @@ public final class ImageOutput {
     public static WriteResult writeGray(Path file, byte[] gray, int width, int height, GeoReference geo,
                                         WriteOptions options) throws IOException {
         Objects.requireNonNull(gray, "gray");
-        Double noData = options.noData();
-        if (noData != null && !(noData >= 0 && noData <= 255 && noData == Math.rint(noData))) {
-            throw new IllegalArgumentException("no-data of an 8-bit image must be an integer 0..255, got " + noData);
-        }
-        return write(file, new Pixels.Gray(gray, width, height), geo, options, noData);
+        Rasters.checkLength(gray.length, width, height);
+        return write(file, new Pixels.Gray(gray, width, height), geo, options, options.noData());
     }
 
     /**
@@ -98,12 +93,15 @@ public final class ImageOutput {
             throw new IllegalArgumentException("float32 images can only be written as GeoTIFF (.tif, .tiff), not '"
                     + file + "'");
         }
+        Rasters.checkLength(values.length, width, height);
         return write(file, new Pixels.Float32(values, width, height), geo, options, options.noData());
     }
 
     /**
      * Opens an RGBA image to be written band of rows by band of rows ({@link ImageSink}); the file is the one
-     * {@link #writeRgba} writes for the same pixels.
+     * {@link #writeRgba} writes for the same pixels, byte for byte, however the rows are cut into bands. The rows
+     * are encoded as they come into a temporary file next to the target: memory is bounded by a band and the
+     * encoder's buffers, not by the picture (see docs/output.md, "Streaming writes").
      *
      * @param file    the target; {@code .png}, {@code .tif} or {@code .tiff}
      * @param width   pixels across
@@ -111,10 +109,13 @@ public final class ImageOutput {
      * @param geo     where the image lies on the ground, or {@code null}
      * @param options how to write
      * @return the sink; close it (try-with-resources) whether or not it was committed
-     * @throws IllegalArgumentException for an unsupported extension or size
+     * @throws IllegalArgumentException for an unsupported extension, size or layout
+     * @throws IOException              naming the file when it or a sidecar cannot be written (checked before any
+     *                                  pixel)
      */
-    public static ImageSink openRgba(Path file, int width, int height, GeoReference geo, WriteOptions options) {
-        return new BufferedImageSink(file, width, height, true, geo, options);
+    public static ImageSink openRgba(Path file, int width, int height, GeoReference geo, WriteOptions options)
+            throws IOException {
+        return FileImageSink.open(file, width, height, 4, 8, geo, options, null, TiffDirectory.CLASSIC_LIMIT);
     }
 
     /**
@@ -127,10 +128,15 @@ public final class ImageOutput {
      * @param geo     where the image lies on the ground, or {@code null}
      * @param options how to write (its no-data value as for {@link #writeGray})
      * @return the sink; close it (try-with-resources) whether or not it was committed
-     * @throws IllegalArgumentException for an unsupported extension or size
+     * @throws IllegalArgumentException for an unsupported extension, size, layout or no-data value
+     * @throws IOException              naming the file when it or a sidecar cannot be written (checked before any
+     *                                  pixel)
      */
-    public static ImageSink openGray(Path file, int width, int height, GeoReference geo, WriteOptions options) {
-        return new BufferedImageSink(file, width, height, false, geo, options);
+    public static ImageSink openGray(Path file, int width, int height, GeoReference geo, WriteOptions options)
+            throws IOException {
+        Objects.requireNonNull(options, "options");
+        return FileImageSink.open(file, width, height, 1, 8, geo, options, options.noData(),
+                TiffDirectory.CLASSIC_LIMIT);
     }
 
     /**
@@ -201,113 +207,26 @@ public final class ImageOutput {
      * @param file    the image file
      * @param options how it will be written
      * @return the image, then the sidecars that the write may touch
-     * @throws IllegalArgumentException for an unsupported extension
+     * @throws IllegalArgumentException for an unsupported extension, or the COG layout for a PNG
      */
     public static List<Path> filesWritten(Path file, WriteOptions options) {
         Objects.requireNonNull(file, "file");
         Objects.requireNonNull(options, "options");
         ImageFormat format = ImageFormat.of(file);
-        if (!sidecarsDue(format, options)) {
+        FileImageSink.checkLayout(file, format, options);
+        if (!SidecarPlan.isDue(format, options)) {
             return List.of(file);
         }
         return List.of(file, worldFilePath(file, options.worldFileNaming()), prjPath(file), auxXmlPath(file));
     }
 
-    private static boolean sidecarsDue(ImageFormat format, WriteOptions options) {
-        return options.sidecars() == WriteOptions.Sidecars.ALWAYS
-                || (options.sidecars() == WriteOptions.Sidecars.WHEN_NOT_EMBEDDED && format == ImageFormat.PNG);
-    }
-
+    /** The whole picture as one band. */
     private static WriteResult write(Path file, Pixels image, GeoReference geo, WriteOptions options,
                                      Double noData) throws IOException {
-        Objects.requireNonNull(file, "file");
-        Objects.requireNonNull(options, "options");
-        ImageFormat format = ImageFormat.of(file);
-        List<String> notices = new ArrayList<>();
-        boolean sidecarsDue = sidecarsDue(format, options);
-        Path worldFile = sidecarsDue ? worldFilePath(file, options.worldFileNaming()) : null;
-        Path prjFile = sidecarsDue ? prjPath(file) : null;
-        Path auxFile = sidecarsDue ? auxXmlPath(file) : null;
-
-        String worldText = null;
-        String prjText = null;
-        String auxText = null;
-        if (sidecarsDue && geo != null) {
-            worldText = WorldFile.of(geo, image.width(), image.height()).toText();
-            EsriPrj.Result prj = EsriPrj.of(geo.crs());
-            if (prj.wkt().isPresent()) {
-                prjText = prj.wkt().get() + "\n";
-                auxText = GdalAuxXml.of(prj.wkt().get(), prj.crs());
-            } else {
-                notices.add(prj.notice());
-            }
-        }
-        if (format == ImageFormat.GEOTIFF && geo != null) {
-            geoTiffNotice(geo.crs()).ifPresent(notices::add);
-        }
-
-        StagedFiles.checkWritable(file);
-        for (Path sidecar : new Path[]{worldText != null ? worldFile : null, prjText != null ? prjFile : null,
-                auxText != null ? auxFile : null}) {
-            if (sidecar != null) {
-                StagedFiles.checkWritable(sidecar);
-            }
-        }
-
-        List<Path> sidecars = new ArrayList<>();
-        try (StagedFiles staged = new StagedFiles()) {
-            staged.stage(file, temp -> encode(format, image, temp, geo, noData, options));
-            if (worldText != null) {
-                staged.stageText(worldFile, worldText);
-                sidecars.add(worldFile);
-            }
-            if (prjText != null) {
-                staged.stageText(prjFile, prjText);
-                staged.stageText(auxFile, auxText);
-                sidecars.add(prjFile);
-                sidecars.add(auxFile);
-            }
-            staged.commit();
-        }
-        if (sidecarsDue) {
-            String reason = geo == null ? "the image has no georeferencing" : "the CRS is not known";
-            if (worldText == null) {
-                removeStale(worldFile, reason, notices);
-            }
-            if (prjText == null) {
-                removeStale(prjFile, reason, notices);
-                removeStale(auxFile, reason, notices);
-            }
-        }
-        return new WriteResult(file, sidecars, notices);
-    }
-
-    private static void encode(ImageFormat format, Pixels image, Path temp, GeoReference geo, Double noData,
-                               WriteOptions options) throws IOException {
-        switch (format) {
-            case PNG -> PngWriter.write(image.image(), temp, options.pngCompressionLevel(),
-                    options.parallelCompression());
-            case GEOTIFF -> GeoTiffWriter.write(image, temp, geo, noData, options.parallelCompression());
-        }
-    }
-
-    /** What a GeoTIFF reader will miss about {@code crs}, if anything. */
-    private static Optional<String> geoTiffNotice(CrsInfo crs) {
-        if (crs.kind() == CrsInfo.Kind.UNKNOWN) {
-            return Optional.of("the GeoTIFF names no CRS: it is unknown");
-        }
-        if (crs.epsg() == null) {
-            return Optional.of("the GeoTIFF records the CRS" + (crs.name() != null ? " '" + crs.name() + "'" : "")
-                    + " without an EPSG code, so only its " + (crs.isGeographic() ? "ellipsoid" : "linear unit")
-                    + " is known to readers; write sidecars (a .prj) for the full definition");
-        }
-        return Optional.empty();
-    }
-
-    private static void removeStale(Path sidecar, String reason, List<String> notices) throws IOException {
-        if (Files.isRegularFile(sidecar)) {
-            Files.delete(sidecar);
-            notices.add("removed " + sidecar + " from an earlier run: " + reason);
+        try (FileImageSink sink = FileImageSink.open(file, image.width(), image.height(), image.samplesPerPixel(),
+                image.bitsPerSample(), geo, options, noData, TiffDirectory.CLASSIC_LIMIT)) {
+            sink.append(image);
+            return sink.commit();
         }
     }
 

@@ -1,7 +1,6 @@
 package io.github.jdem846.output;
 
 import java.awt.image.BufferedImage;
-import java.awt.image.Raster;
 import java.io.BufferedOutputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.DataOutputStream;
@@ -11,19 +10,20 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
-import java.util.stream.IntStream;
+import java.util.List;
 import java.util.zip.Adler32;
 import java.util.zip.CRC32;
 import java.util.zip.Deflater;
 
 /**
- * Encodes 8-bit RGBA ({@code TYPE_INT_ARGB}; any other type through {@code getRGB}) and 8-bit gray
- * ({@code TYPE_BYTE_GRAY}) images as PNG: per-row PNG filters chosen as PngEncoder's "predictor encoding" chooses
- * them (the filter with the smallest sum of absolute values), and one zlib stream made of independently compressed
- * segments of whole rows, about {@link #SEGMENT_BYTES} each, compressed in parallel when asked. The segments, and so
- * the file's bytes, depend only on the image and the compression level: the file is the same on one thread or
- * many, on any machine with the same zlib. Measured against PngEncoder and ImageIO in docs/performance.md ("PNG
- * encoding").
+ * Encodes 8-bit RGBA and 8-bit gray images as PNG, band of rows after band of rows ({@link BandEncoder}): per-row
+ * PNG filters chosen as PngEncoder's "predictor encoding" chooses them (the filter with the smallest sum of absolute
+ * values), and one zlib stream made of independently compressed segments of whole rows, about
+ * {@link #SEGMENT_BYTES} each, the segments of a band compressed in parallel when asked. The segments, and so the
+ * file's bytes, depend only on the image and the compression level: the file is the same on one thread or many,
+ * for the whole picture given at once or in bands of any size ({@link RowChunks}), on any machine with the same
+ * zlib. Memory: the band, at most one segment of rows copied from a band that ends inside it, and one batch of
+ * compressed segments. Measured against PngEncoder and ImageIO in docs/performance.md ("PNG encoding").
  *
  * <p>A segment ends with a sync flush (the empty stored block that byte-aligns the stream) and the next starts
  * from a fresh deflate state, so segments concatenate into one valid stream (as pigz and PngEncoder do); the
@@ -31,7 +31,7 @@ import java.util.zip.Deflater;
  * is written: the samples are display values, as gdaldem writes them (the JDK's {@code TYPE_BYTE_GRAY} colour space
  * is linear gray, and tagging a hillshade with it made colour-managed viewers show it much lighter).
  */
-final class PngWriter {
+final class PngWriter implements BandEncoder {
 
     /** Target filtered bytes per deflate segment (whole rows, at least one). */
     static final int SEGMENT_BYTES = 1 << 20;
@@ -45,11 +45,72 @@ final class PngWriter {
     private static final int MAX_SEGMENTS_PER_BATCH = 64;
     private static final byte[] SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
 
-    private PngWriter() {
+    private final DataOutputStream out;
+    private final IdatChunks idat;
+    private final RowChunks segments;
+    private final int segmentCount;
+    private final int bytesPerPixel;
+    private final int level;
+    private final boolean parallel;
+    private final int batch;
+    private long adler = 1;
+    private boolean finished;
+
+    /**
+     * Starts a PNG on {@code stream}: writes the signature and the header at once, the rows as they are appended.
+     *
+     * @param bytesPerPixel    4 for RGBA (colour type 6), 1 for gray (colour type 0), 8 bits per sample
+     * @param compressionLevel deflate level 0..9
+     * @param parallel         compress the segments of a band on all processors; same bytes
+     * @throws IllegalArgumentException for a size PNG cannot hold or a row longer than one Java array
+     */
+    PngWriter(OutputStream stream, int width, int height, int bytesPerPixel, int compressionLevel, boolean parallel)
+            throws IOException {
+        if (compressionLevel < 0 || compressionLevel > 9) {
+            throw new IllegalArgumentException("PNG compression level must be 0..9, got " + compressionLevel);
+        }
+        if (width < 1 || height < 1) {
+            throw new IllegalArgumentException("image size must be at least 1×1, got " + width + "×" + height);
+        }
+        int rowBytes = 1 + Pixels.rowBytes(width, bytesPerPixel, 8);
+        this.bytesPerPixel = bytesPerPixel;
+        this.level = compressionLevel;
+        this.parallel = parallel;
+        this.batch = Batches.size(parallel, SEGMENTS_PER_BATCH_AND_PROCESSOR, MAX_SEGMENTS_PER_BATCH);
+        int rowsPerSegment = Math.max(1, SEGMENT_BYTES / rowBytes);
+        this.segmentCount = RowChunks.count(height, rowsPerSegment);
+        this.segments = new RowChunks(width, height, bytesPerPixel, 8, rowsPerSegment, true, this::compress);
+        this.out = new DataOutputStream(stream);
+        out.write(SIGNATURE);
+        ByteArrayOutputStream ihdr = new ByteArrayOutputStream();
+        DataOutputStream h = new DataOutputStream(ihdr);
+        h.writeInt(width);
+        h.writeInt(height);
+        h.writeByte(8);                                   // bit depth
+        h.writeByte(bytesPerPixel == 4 ? 6 : 0);          // colour type: RGBA or gray
+        h.writeByte(0);                                   // deflate
+        h.writeByte(0);                                   // adaptive filtering
+        h.writeByte(0);                                   // not interlaced
+        chunk(out, "IHDR", ihdr.toByteArray(), ihdr.size());
+        this.idat = new IdatChunks(out);
+        idat.write(new byte[] {0x78, zlibFlags(compressionLevel)}, 2);
+    }
+
+    /** A PNG written to {@code file} (created or truncated); {@link #close()} closes the file. */
+    static PngWriter toFile(Path file, int width, int height, int bytesPerPixel, int compressionLevel,
+                            boolean parallel) throws IOException {
+        OutputStream stream = new BufferedOutputStream(Files.newOutputStream(file), 1 << 16);
+        try {
+            return new PngWriter(stream, width, height, bytesPerPixel, compressionLevel, parallel);
+        } catch (IOException | RuntimeException e) {
+            stream.close();
+            throw e;
+        }
     }
 
     /**
-     * Writes {@code image} to {@code file} (created or truncated).
+     * Writes {@code image} to {@code file} (created or truncated): {@code TYPE_BYTE_GRAY} as gray, any other type
+     * as RGBA.
      *
      * @param compressionLevel deflate level 0..9
      * @param parallel         compress the segments on all processors (common ForkJoinPool); same bytes
@@ -60,64 +121,65 @@ final class PngWriter {
         }
     }
 
+    /** Writes {@code image} to {@code stream}, which stays open. */
     static void write(BufferedImage image, OutputStream stream, int compressionLevel, boolean parallel)
             throws IOException {
-        if (compressionLevel < 0 || compressionLevel > 9) {
-            throw new IllegalArgumentException("PNG compression level must be 0..9, got " + compressionLevel);
-        }
-        Scanlines lines = Scanlines.of(image);
-        DataOutputStream out = new DataOutputStream(stream);
-        out.write(SIGNATURE);
-        ByteArrayOutputStream ihdr = new ByteArrayOutputStream();
-        DataOutputStream h = new DataOutputStream(ihdr);
-        h.writeInt(lines.width);
-        h.writeInt(lines.height);
-        h.writeByte(8);                                   // bit depth
-        h.writeByte(lines.bytesPerPixel == 4 ? 6 : 0);    // colour type: RGBA or gray
-        h.writeByte(0);                                   // deflate
-        h.writeByte(0);                                   // adaptive filtering
-        h.writeByte(0);                                   // not interlaced
-        chunk(out, "IHDR", ihdr.toByteArray(), ihdr.size());
-        writeImageData(out, lines, compressionLevel, parallel);
-        chunk(out, "IEND", new byte[0], 0);
-        out.flush();
+        Pixels pixels = new Pixels.Image(image);
+        PngWriter png = new PngWriter(stream, pixels.width(), pixels.height(), pixels.samplesPerPixel(),
+                compressionLevel, parallel);
+        png.append(pixels);
+        png.finish();
     }
 
-    /** The zlib stream of the filtered rows, segment by segment, in IDAT chunks. */
-    private static void writeImageData(DataOutputStream out, Scanlines lines, int level, boolean parallel)
-            throws IOException {
-        int rowsPerSegment = Math.max(1, SEGMENT_BYTES / lines.rowBytes);
-        int segments = (lines.height + rowsPerSegment - 1) / rowsPerSegment;
-        IdatChunks idat = new IdatChunks(out);
-        idat.write(new byte[] {0x78, zlibFlags(level)}, 2);
-        long adler = 1;
-        int batch = parallel ? Math.min(MAX_SEGMENTS_PER_BATCH,
-                SEGMENTS_PER_BATCH_AND_PROCESSOR * Runtime.getRuntime().availableProcessors()) : 1;
-        for (int s0 = 0; s0 < segments; s0 += batch) {
-            int first = s0;
-            int end = Math.min(segments, s0 + batch);
-            Segment[] done = new Segment[end - first];
-            IntStream range = IntStream.range(first, end);
-            (parallel ? range.parallel() : range).forEach(s -> done[s - first] = compress(lines, s * rowsPerSegment,
-                    Math.min(lines.height, (s + 1) * rowsPerSegment), level, s == segments - 1));
-            for (Segment s : done) {
-                idat.write(s.deflated, s.length);
-                adler = combineAdler32(adler, s.adler32, s.inputLength);
-            }
+    @Override
+    public void append(Pixels band) throws IOException {
+        if (finished) {
+            throw new IllegalStateException("the PNG is finished");
         }
-        idat.write(new byte[] {(byte) (adler >>> 24), (byte) (adler >>> 16), (byte) (adler >>> 8), (byte) adler}, 4);
-        idat.flush();
+        segments.append(band);
+    }
+
+    /** Writes the Adler-32 of the rows and the last chunks. */
+    @Override
+    public void finish() throws IOException {
+        if (segments.rowsIn() != segments.height()) {
+            throw new IllegalStateException("only " + segments.rowsIn() + " of " + segments.height()
+                    + " rows were appended");
+        }
+        if (!finished) {
+            finished = true;
+            idat.write(new byte[] {(byte) (adler >>> 24), (byte) (adler >>> 16), (byte) (adler >>> 8),
+                (byte) adler}, 4);
+            idat.flush();
+            chunk(out, "IEND", new byte[0], 0);
+            out.flush();
+        }
+    }
+
+    @Override
+    public void close() throws IOException {
+        out.close();
+    }
+
+    /** The segments a band completed: filtered and deflated, a batch at a time, and written in order. */
+    private void compress(List<RowChunks.Chunk> ready) throws IOException {
+        Batches.run(ready.size(), batch, parallel, i -> compress(ready.get(i)), s -> {
+            idat.write(s.deflated, s.length);
+            adler = combineAdler32(adler, s.adler32, s.inputLength);
+        });
     }
 
     /** One segment's raw deflate data and the Adler-32 and length of its filtered rows. */
     private record Segment(byte[] deflated, int length, long adler32, int inputLength) {
     }
 
-    /** Rows [y0, y1) filtered and deflated on their own: a sync flush at the end, or the final block if last. */
-    private static Segment compress(Scanlines lines, int y0, int y1, int level, boolean last) {
-        int n = (y1 - y0) * lines.rowBytes;
+    /** A segment's rows filtered and deflated on their own: a sync flush at the end, or the final block if last. */
+    private Segment compress(RowChunks.Chunk segment) {
+        boolean last = segment.index() == segmentCount - 1;
+        int rowBytes = 1 + segments.rowBytes();
+        int n = segment.rows() * rowBytes;
         byte[] filtered = new byte[n];
-        new RowFilter(lines).filter(y0, y1, filtered);
+        new RowFilter(segments.rowBytes(), bytesPerPixel).filter(segment, filtered);
         Adler32 adler = new Adler32();
         adler.update(filtered, 0, n);
         Deflater deflater = new Deflater(level, true);
@@ -126,20 +188,20 @@ final class PngWriter {
             if (last) {
                 deflater.finish();
             }
-            byte[] out = new byte[n + (n >> 3) + 64];
+            byte[] deflated = new byte[(int) Math.min(Integer.MAX_VALUE - 16, n + (n >> 3) + 64L)];
             int length = 0;
             while (true) {
-                int room = out.length - length;
-                int k = deflater.deflate(out, length, room, last ? Deflater.NO_FLUSH : Deflater.SYNC_FLUSH);
+                int room = deflated.length - length;
+                int k = deflater.deflate(deflated, length, room, last ? Deflater.NO_FLUSH : Deflater.SYNC_FLUSH);
                 length += k;
                 if (last ? deflater.finished() : k < room) {
                     break;
                 }
-                if (length == out.length) {
-                    out = Arrays.copyOf(out, out.length * 2);
+                if (length == deflated.length) {
+                    deflated = Arrays.copyOf(deflated, deflated.length * 2);
                 }
             }
-            return new Segment(Arrays.copyOf(out, length), length, adler.getValue(), n);
+            return new Segment(Arrays.copyOf(deflated, length), length, adler.getValue(), n);
         } finally {
             deflater.end();
         }
@@ -206,69 +268,12 @@ final class PngWriter {
         }
     }
 
-    /** The image's rows as PNG samples: R, G, B, A or gray, 8 bits each. */
-    private static final class Scanlines {
-        final BufferedImage image;
-        final int width;
-        final int height;
-        final int bytesPerPixel;
-        /** Bytes of one filtered row: the filter type and the samples. */
-        final int rowBytes;
-
-        private Scanlines(BufferedImage image, int bytesPerPixel) {
-            this.image = image;
-            this.width = image.getWidth();
-            this.height = image.getHeight();
-            this.bytesPerPixel = bytesPerPixel;
-            this.rowBytes = 1 + bytesPerPixel * width;
-        }
-
-        static Scanlines of(BufferedImage image) {
-            return new Scanlines(image, image.getType() == BufferedImage.TYPE_BYTE_GRAY ? 1 : 4);
-        }
-
-        /** True when the image is written as RGBA through {@code getRGB} (sRGB): any type but ARGB and gray. */
-        static boolean isRgbaFallback(BufferedImage image) {
-            int t = image.getType();
-            return t != BufferedImage.TYPE_INT_ARGB && t != BufferedImage.TYPE_BYTE_GRAY;
-        }
-
-        /** Scratch for {@link #row}: a row of ints (RGBA) or bytes (gray). */
-        Object scratch() {
-            return bytesPerPixel == 1 ? new byte[width] : new int[width];
-        }
-
-        /** Row {@code y}'s samples into {@code dst[1 …]}, through {@code scratch} (from {@link #scratch()}). */
-        void row(int y, byte[] dst, Object scratch) {
-            Raster raster = image.getRaster();
-            if (bytesPerPixel == 1) {
-                raster.getDataElements(0, y, width, 1, scratch);
-                System.arraycopy((byte[]) scratch, 0, dst, 1, width);
-                return;
-            }
-            int[] pixels = (int[]) scratch;
-            if (image.getType() == BufferedImage.TYPE_INT_ARGB) {
-                raster.getDataElements(0, y, width, 1, pixels);
-            } else {
-                image.getRGB(0, y, width, 1, pixels, 0, width);
-            }
-            for (int x = 0, j = 1; x < width; x++) {
-                int p = pixels[x];
-                dst[j++] = (byte) (p >>> 16);
-                dst[j++] = (byte) (p >>> 8);
-                dst[j++] = (byte) p;
-                dst[j++] = (byte) (p >>> 24);
-            }
-        }
-    }
-
     /**
      * PNG filtering of rows (PNG spec 9): each row takes the filter (none, sub, up, average, Paeth) whose output has
      * the smallest sum of absolute values, the first on ties; none sums the unsigned samples, the others their
      * signed bytes (PngEncoder's rule, so that its files and ours compress alike).
      */
     private static final class RowFilter {
-        private final Scanlines lines;
         private final int bpp;
         private byte[] prev;
         private byte[] cur;
@@ -276,12 +281,11 @@ final class PngWriter {
         private final byte[] up;
         private final byte[] avg;
         private final byte[] paeth;
-        private final Object scratch;
 
-        RowFilter(Scanlines lines) {
-            this.lines = lines;
-            int n = lines.rowBytes;
-            bpp = lines.bytesPerPixel;
+        /** @param sampleBytes bytes of a row's samples (without the filter-type byte) */
+        RowFilter(int sampleBytes, int bytesPerPixel) {
+            int n = 1 + sampleBytes;
+            bpp = bytesPerPixel;
             prev = new byte[n];
             cur = new byte[n];
             sub = new byte[n];
@@ -292,18 +296,15 @@ final class PngWriter {
             up[0] = 2;
             avg[0] = 3;
             paeth[0] = 4;
-            scratch = lines.scratch();
         }
 
-        /** Filters rows [y0, y1) into {@code out}, one after another; row y0 − 1 (zeros above row 0) is read again. */
-        void filter(int y0, int y1, byte[] out) {
-            if (y0 > 0) {
-                lines.row(y0 - 1, prev, scratch);
-            }
-            int n = lines.rowBytes;
-            for (int y = y0; y < y1; y++) {
-                lines.row(y, cur, scratch);
-                System.arraycopy(choose(), 0, out, (y - y0) * n, n);
+        /** Filters the rows of {@code segment} into {@code out}, one after another, after the row above it. */
+        void filter(RowChunks.Chunk segment, byte[] out) {
+            segment.rowAbove(prev, 1);
+            int n = cur.length;
+            for (int r = 0; r < segment.rows(); r++) {
+                segment.row(r, cur, 1);
+                System.arraycopy(choose(), 0, out, r * n, n);
                 byte[] t = prev;
                 prev = cur;
                 cur = t;

@@ -8,10 +8,8 @@ import java.awt.image.ColorModel;
 import java.awt.image.ComponentColorModel;
 import java.awt.image.DataBuffer;
 import java.awt.image.DataBufferByte;
-import java.awt.image.DataBufferFloat;
 import java.awt.image.DataBufferInt;
 import java.awt.image.DirectColorModel;
-import java.awt.image.PixelInterleavedSampleModel;
 import java.awt.image.Raster;
 import java.awt.image.SinglePixelPackedSampleModel;
 import java.awt.image.WritableRaster;
@@ -42,18 +40,6 @@ final class Rasters {
                 new int[]{8}, false, true, Transparency.OPAQUE, DataBuffer.TYPE_BYTE);
         WritableRaster raster = Raster.createInterleavedRaster(new DataBufferByte(gray, gray.length), width, height,
                 width, 1, new int[]{0}, null);
-        return new BufferedImage(cm, raster, false, null);
-    }
-
-    /** A single-band float32 image (no standard {@code TYPE_*}; only the GeoTIFF writer accepts it). */
-    static BufferedImage floatImage(float[] values, int width, int height) {
-        checkLength(values.length, width, height);
-        ComponentColorModel cm = new ComponentColorModel(ColorSpace.getInstance(ColorSpace.CS_GRAY), false, false,
-                Transparency.OPAQUE, DataBuffer.TYPE_FLOAT);
-        PixelInterleavedSampleModel sm = new PixelInterleavedSampleModel(DataBuffer.TYPE_FLOAT, width, height, 1,
-                width, new int[]{0});
-        WritableRaster raster = Raster.createWritableRaster(sm, new DataBufferFloat(values, values.length),
-                new Point());
         return new BufferedImage(cm, raster, false, null);
     }
 

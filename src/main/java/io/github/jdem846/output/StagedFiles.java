@@ -22,6 +22,10 @@ import java.util.concurrent.ThreadLocalRandom;
  * into place, in the order staged, each by an atomic rename that replaces the old file (or a plain move where the
  * file system cannot rename atomically). {@link #close} deletes whatever was not committed.
  *
+ * <p>A file written over time (a picture streamed band by band) is {@link #open opened} instead: its temporary file
+ * is created at once and filled by the caller. {@link #scratch Scratch files} (the tiles of a COG waiting to be
+ * copied into it) live next to the target too and are always deleted by {@link #close}, never moved.
+ *
  * <p>Temporary files are created with the default permissions of new files (not the owner-only permissions of
  * {@link Files#createTempFile}), so the final files look like any other file the user writes.
  */
@@ -37,6 +41,7 @@ final class StagedFiles implements AutoCloseable {
     }
 
     private final List<Staged> staged = new ArrayList<>();
+    private final List<Path> scratch = new ArrayList<>();
     private int committed;
 
     /**
@@ -92,7 +97,7 @@ final class StagedFiles implements AutoCloseable {
      */
     void stage(Path target, Content content) throws IOException {
         checkWritable(target);
-        Path temp = createTemp(target);
+        Path temp = createTemp(target, "tmp");
         try {
             content.writeTo(temp);
         } catch (IOException | RuntimeException | Error e) {
@@ -103,6 +108,30 @@ final class StagedFiles implements AutoCloseable {
             throw e;
         }
         staged.add(new Staged(temp, target));
+    }
+
+    /**
+     * Creates the temporary file of {@code target} now, empty, for the caller to write; it is committed with the
+     * others.
+     *
+     * @return the temporary file
+     * @throws IOException naming {@code target} when it cannot be written or the file cannot be created
+     */
+    Path open(Path target) throws IOException {
+        checkWritable(target);
+        Path temp = createTemp(target, "tmp");
+        staged.add(new Staged(temp, target));
+        return temp;
+    }
+
+    /**
+     * Creates an empty scratch file next to {@code target}, {@code .<name>.<random>.<purpose>.tmp}, deleted by
+     * {@link #close} (or earlier by the caller).
+     */
+    Path scratch(Path target, String purpose) throws IOException {
+        Path file = createTemp(target, purpose + ".tmp");
+        scratch.add(file);
+        return file;
     }
 
     /** Stages a small text file (UTF-8). */
@@ -132,22 +161,26 @@ final class StagedFiles implements AutoCloseable {
         }
     }
 
-    /** Deletes the temporary files that were not committed. */
+    /** Deletes the temporary files that were not committed, and the scratch files. */
     @Override
     public void close() {
         for (int i = committed; i < staged.size(); i++) {
             deleteQuietly(staged.get(i).temp(), null);
         }
+        for (Path file : scratch) {
+            deleteQuietly(file, null);
+        }
         staged.clear();
+        scratch.clear();
         committed = 0;
     }
 
-    private static Path createTemp(Path target) throws IOException {
+    private static Path createTemp(Path target, String suffix) throws IOException {
         Path dir = directoryOf(target);
         String name = target.getFileName().toString();
         for (int attempt = 0; ; attempt++) {
             Path temp = dir.resolve("." + name + "." + Long.toHexString(ThreadLocalRandom.current().nextLong())
-                    + ".tmp");
+                    + "." + suffix);
             try {
                 Files.newOutputStream(temp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
                 return temp;
@@ -169,7 +202,8 @@ final class StagedFiles implements AutoCloseable {
         return parent;
     }
 
-    private static IOException withTarget(IOException e, Path target) {
+    /** {@code e}, or an IOException wrapping it, whose message names {@code target}. */
+    static IOException withTarget(IOException e, Path target) {
         String message = e.getMessage();
         if (message != null && message.contains(target.toString())) {
             return e;

@@ -13,11 +13,18 @@ import java.util.Objects;
  *                            PNG has no no-data marker: RGBA no-data pixels are transparent (alpha 0)
  * @param pngCompressionLevel deflate level 0 (none) to 9 (smallest) for PNG; the default 1 is the fastest level
  *                            and within 10 % of the smallest file (see docs/performance.md)
- * @param parallelCompression compress on all processors: PNG row segments and GeoTIFF strips in the common
- *                            ForkJoinPool (the file is the same either way)
+ * @param parallelCompression compress on all processors: PNG row segments, GeoTIFF strips and COG tiles in the
+ *                            common ForkJoinPool (the file is the same either way)
+ * @param tiffLayout          how a GeoTIFF is laid out: {@link TiffLayout#STRIPS} (the default) or a
+ *                            Cloud-Optimized GeoTIFF ({@link TiffLayout#COG}, GeoTIFF files only)
+ * @param cogTileSize         the tile edge of a COG in pixels, a multiple of 16 from 16 to 4096 (default 512)
  */
 public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, Double noData,
-                           int pngCompressionLevel, boolean parallelCompression) {
+                           int pngCompressionLevel, boolean parallelCompression, TiffLayout tiffLayout,
+                           int cogTileSize) {
+
+    /** The default tile edge of a COG, as GDAL's COG driver. */
+    public static final int DEFAULT_COG_TILE_SIZE = 512;
 
     /** When to write georeferencing sidecar files (world file, .prj, .aux.xml). */
     public enum Sidecars {
@@ -37,43 +44,83 @@ public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, D
         WLD
     }
 
+    /** How a GeoTIFF's pixels are laid out in the file. */
+    public enum TiffLayout {
+        /** Strips of rows (about 64 KiB each), one image: the simplest file, read by every TIFF reader. */
+        STRIPS,
+        /**
+         * A Cloud-Optimized GeoTIFF: 512 × 512 tiles ({@link #cogTileSize()}), overviews each half the size of the
+         * one before, and GDAL's COG layout (IFDs first, smallest overview's tiles first), so that a reader can
+         * fetch any part at any zoom with a few range requests; {@code gdalinfo} reports {@code LAYOUT=COG}.
+         * 8-bit gray and RGBA pictures only.
+         */
+        COG
+    }
+
     public WriteOptions {
         Objects.requireNonNull(sidecars, "sidecars");
         Objects.requireNonNull(worldFileNaming, "worldFileNaming");
+        Objects.requireNonNull(tiffLayout, "tiffLayout");
         if (pngCompressionLevel < 0 || pngCompressionLevel > 9) {
             throw new IllegalArgumentException("PNG compression level must be 0..9, got " + pngCompressionLevel);
         }
+        if (cogTileSize < 16 || cogTileSize > 4096 || cogTileSize % 16 != 0) {
+            throw new IllegalArgumentException("COG tile size must be a multiple of 16 from 16 to 4096, got "
+                    + cogTileSize);
+        }
     }
 
-    /** Sidecars when not embedded, {@code .pgw}/{@code .tfw} naming, no no-data tag, PNG level 1, parallel. */
+    /**
+     * Sidecars when not embedded, {@code .pgw}/{@code .tfw} naming, no no-data tag, PNG level 1, parallel, GeoTIFF
+     * strips (COG tiles of 512).
+     */
     public static WriteOptions defaults() {
-        return new WriteOptions(Sidecars.WHEN_NOT_EMBEDDED, WorldFileNaming.FORMAT, null, 1, true);
+        return new WriteOptions(Sidecars.WHEN_NOT_EMBEDDED, WorldFileNaming.FORMAT, null, 1, true, TiffLayout.STRIPS,
+                DEFAULT_COG_TILE_SIZE);
     }
 
     public WriteOptions withSidecars(Sidecars value) {
-        return new WriteOptions(value, worldFileNaming, noData, pngCompressionLevel, parallelCompression);
+        return new WriteOptions(value, worldFileNaming, noData, pngCompressionLevel, parallelCompression, tiffLayout,
+                cogTileSize);
     }
 
     public WriteOptions withWorldFileNaming(WorldFileNaming value) {
-        return new WriteOptions(sidecars, value, noData, pngCompressionLevel, parallelCompression);
+        return new WriteOptions(sidecars, value, noData, pngCompressionLevel, parallelCompression, tiffLayout,
+                cogTileSize);
     }
 
     /** A copy with the given GeoTIFF no-data value. */
     public WriteOptions withNoData(double value) {
-        return new WriteOptions(sidecars, worldFileNaming, value, pngCompressionLevel, parallelCompression);
+        return new WriteOptions(sidecars, worldFileNaming, value, pngCompressionLevel, parallelCompression,
+                tiffLayout, cogTileSize);
     }
 
     /** A copy without a GeoTIFF no-data value. */
     public WriteOptions withoutNoData() {
-        return new WriteOptions(sidecars, worldFileNaming, null, pngCompressionLevel, parallelCompression);
+        return new WriteOptions(sidecars, worldFileNaming, null, pngCompressionLevel, parallelCompression,
+                tiffLayout, cogTileSize);
     }
 
     public WriteOptions withPngCompressionLevel(int value) {
-        return new WriteOptions(sidecars, worldFileNaming, noData, value, parallelCompression);
+        return new WriteOptions(sidecars, worldFileNaming, noData, value, parallelCompression, tiffLayout,
+                cogTileSize);
     }
 
     /** A copy that compresses on all processors, or on the calling thread only. */
     public WriteOptions withParallelCompression(boolean value) {
-        return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, value);
+        return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, value, tiffLayout,
+                cogTileSize);
+    }
+
+    /** A copy writing GeoTIFFs in strips or as a Cloud-Optimized GeoTIFF (PNG files refuse the COG layout). */
+    public WriteOptions withTiffLayout(TiffLayout value) {
+        return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, parallelCompression, value,
+                cogTileSize);
+    }
+
+    /** A copy with COG tiles of {@code value} × {@code value} pixels (a multiple of 16 from 16 to 4096). */
+    public WriteOptions withCogTileSize(int value) {
+        return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, parallelCompression,
+                tiffLayout, value);
     }
 }

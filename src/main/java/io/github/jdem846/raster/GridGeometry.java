@@ -6,6 +6,7 @@ import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.geo.GeoLocator;
 import io.github.jdem846.geo.LatLon;
 import io.github.jdem846.geo.LatLonBox;
+import io.github.jdem846.geo.WebMercator;
 import java.util.Objects;
 import java.util.Optional;
 
@@ -21,7 +22,8 @@ import java.util.Optional;
  * <p>Metric cell size: for a projected CRS it is the cell size times the linear unit in metres, the same for every
  * row. For a geographic CRS it is computed per row on the CRS's ellipsoid (WGS 84 when unnamed): east–west
  * N(φ)·cos φ·Δλ, north–south the meridian arc across the row. With unknown units it is the cell size itself
- * ({@link #hasMetricUnits()} is then false and callers should say so).
+ * ({@link #hasMetricUnits()} is then false and callers should say so). A Web Mercator grid can be asked for its
+ * ground sizes instead, per row like a geographic grid ({@link #withGroundCellSizes()}).
  */
 public final class GridGeometry {
 
@@ -34,6 +36,8 @@ public final class GridGeometry {
     private final CrsInfo crs;
     private final PixelAnchor declaredAnchor;
     private final Placement placement;
+    /** True: metric sizes are lengths on the ground of a Web Mercator grid ({@link #withGroundCellSizes()}). */
+    private final boolean groundSizes;
     /** The origin of the root grid ({@link #placement}): cell centres are computed from it, see {@link #centerY}. */
     private final double rootOriginX;
     private final double rootOriginY;
@@ -52,17 +56,17 @@ public final class GridGeometry {
     public GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
                         CrsInfo crs, PixelAnchor declaredAnchor) {
         this(width, height, originX, originY, cellWidth, cellHeight, crs, declaredAnchor,
-                new Placement(0, 0, Math.max(width, 1), Math.max(height, 1)), originX, originY);
+                new Placement(0, 0, Math.max(width, 1), Math.max(height, 1)), false, originX, originY);
     }
 
     private GridGeometry(GridGeometry g, int width, int height, double originX, double originY, Placement placement) {
         this(width, height, originX, originY, g.cellWidth, g.cellHeight, g.crs, g.declaredAnchor, placement,
-                g.rootOriginX, g.rootOriginY);
+                g.groundSizes, g.rootOriginX, g.rootOriginY);
     }
 
     private GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
-                         CrsInfo crs, PixelAnchor declaredAnchor, Placement placement, double rootOriginX,
-                         double rootOriginY) {
+                         CrsInfo crs, PixelAnchor declaredAnchor, Placement placement, boolean groundSizes,
+                         double rootOriginX, double rootOriginY) {
         if (width < 1 || height < 1) {
             throw new IllegalArgumentException("grid size must be at least 1×1, got " + width + "×" + height);
         }
@@ -82,6 +86,7 @@ public final class GridGeometry {
         this.crs = Objects.requireNonNull(crs, "crs");
         this.declaredAnchor = Objects.requireNonNull(declaredAnchor, "declaredAnchor");
         this.placement = placement;
+        this.groundSizes = groundSizes;
         this.rootOriginX = rootOriginX;
         this.rootOriginY = rootOriginY;
     }
@@ -183,7 +188,10 @@ public final class GridGeometry {
     /** East–west size in metres of a cell of row {@code row} (see the class comment). */
     public double cellWidthMeters(int row) {
         return switch (crs.kind()) {
-            case PROJECTED -> cellWidth * crs.linearUnitMeters();
+            case PROJECTED -> groundSizes
+                    ? crs.ellipsoidOrWgs84().parallelArcLength(WebMercator.latitude(centerY(row)),
+                            WebMercator.longitudeSpan(cellWidth))
+                    : cellWidth * crs.linearUnitMeters();
             case GEOGRAPHIC -> crs.ellipsoidOrWgs84().parallelArcLength(centerY(row), cellWidth);
             case UNKNOWN -> cellWidth;
         };
@@ -192,13 +200,25 @@ public final class GridGeometry {
     /** North–south size in metres of a cell of row {@code row} (see the class comment). */
     public double cellHeightMeters(int row) {
         return switch (crs.kind()) {
-            case PROJECTED -> cellHeight * crs.linearUnitMeters();
+            case PROJECTED -> {
+                if (!groundSizes) {
+                    yield cellHeight * crs.linearUnitMeters();
+                }
+                double north = northEdge(row);
+                yield crs.ellipsoidOrWgs84().meridianArcLength(WebMercator.latitude(north),
+                        WebMercator.latitude(north - cellHeight));
+            }
             case GEOGRAPHIC -> {
-                double north = rootOriginY - ((long) placement.row() + row) * cellHeight;
+                double north = northEdge(row);
                 yield crs.ellipsoidOrWgs84().meridianArcLength(north, north - cellHeight);
             }
             case UNKNOWN -> cellHeight;
         };
+    }
+
+    /** World y of the north edge of row {@code row}, from the root grid's origin as {@link #centerY} is. */
+    private double northEdge(int row) {
+        return rootOriginY - ((long) placement.row() + row) * cellHeight;
     }
 
     /** @return the ellipsoid used for metric sizes (the CRS's, or WGS 84) */
@@ -283,7 +303,7 @@ public final class GridGeometry {
         int w = Math.max(1, (width + factorX - 1) / factorX);
         int h = Math.max(1, (height + factorY - 1) / factorY);
         return new GridGeometry(w, h, originX, originY, cellWidth * factorX, cellHeight * factorY, crs,
-                declaredAnchor);
+                declaredAnchor, new Placement(0, 0, w, h), groundSizes, originX, originY);
     }
 
     /**
@@ -303,10 +323,35 @@ public final class GridGeometry {
         return withCrs(c);
     }
 
-    /** A copy with another CRS. */
+    /** A copy with another CRS (ground cell sizes are kept while it is still Web Mercator). */
     public GridGeometry withCrs(CrsInfo newCrs) {
         return new GridGeometry(width, height, originX, originY, cellWidth, cellHeight,
-                Objects.requireNonNull(newCrs, "crs"), declaredAnchor, placement, rootOriginX, rootOriginY);
+                Objects.requireNonNull(newCrs, "crs"), declaredAnchor, placement,
+                groundSizes && WebMercator.isWebMercator(newCrs), rootOriginX, rootOriginY);
+    }
+
+    /**
+     * This Web Mercator (EPSG:3857) grid with metric cell sizes measured on the ground: per row, the east–west
+     * length of the cell's arc of parallel and the north–south meridian arc across the row, on the CRS's ellipsoid
+     * (WGS 84), at the row's latitude. Web Mercator's nominal metres overstate ground lengths by about 1/cos φ
+     * (1.41 at 45°), which is what {@link #cellWidthMeters(int)} of a projected grid otherwise reports, as gdaldem
+     * uses them; hillshade slopes and cast-shadow lengths then come out true at every latitude. Map tiles use it.
+     *
+     * @return the grid with ground cell sizes
+     * @throws IllegalArgumentException when the CRS is not Web Mercator (EPSG:3857)
+     */
+    public GridGeometry withGroundCellSizes() {
+        if (!WebMercator.isWebMercator(crs)) {
+            throw new IllegalArgumentException("ground cell sizes are known for Web Mercator (EPSG:3857) grids, "
+                    + "not for " + (crs.name() != null ? crs.name() : crs.kind().toString()));
+        }
+        return new GridGeometry(width, height, originX, originY, cellWidth, cellHeight, crs, declaredAnchor,
+                placement, true, rootOriginX, rootOriginY);
+    }
+
+    /** @return true when metric cell sizes are measured on the ground ({@link #withGroundCellSizes()}) */
+    public boolean hasGroundCellSizes() {
+        return groundSizes;
     }
 
     @Override
@@ -314,7 +359,8 @@ public final class GridGeometry {
         return o instanceof GridGeometry g && width == g.width && height == g.height
                 && Double.compare(originX, g.originX) == 0 && Double.compare(originY, g.originY) == 0
                 && Double.compare(cellWidth, g.cellWidth) == 0 && Double.compare(cellHeight, g.cellHeight) == 0
-                && crs.kind() == g.crs.kind() && Objects.equals(crs.epsg(), g.crs.epsg());
+                && crs.kind() == g.crs.kind() && Objects.equals(crs.epsg(), g.crs.epsg())
+                && groundSizes == g.groundSizes;
     }
 
     @Override

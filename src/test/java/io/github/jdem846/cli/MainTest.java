@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 
 class MainTest {
 
-    private static final Set<String> ALL = Set.of("help", "render", "hillshade", "tint", "shadows", "info", "sun");
+    private static final Set<String> ALL = Set.of("help", "render", "hillshade", "tint", "shadows", "tiles", "info", "sun");
 
     @Test
     void aNamedSubcommandBuildsOnlyItsOwnModel() {

@@ -32,6 +32,23 @@ class GeoLocatorTest {
     }
 
     @Test
+    void lonLatGoBackToTheGdaltransformUtmPositions() throws IOException {
+        // the same two points as utmCornersMatchGdaltransform, the other way, in one batch
+        GridGeometry g = DemReader.read(Path.of(
+                "testdata/variants/bigtujunga_crop600x400_v04_int16_deflate_pred2_tile256.tif")).geometry();
+        double[] p = {-118.20820449866, 34.3742783631901, -118.011162552414, 34.2678499723531};
+        g.geoLocator().orElseThrow().fromLonLat(p, 2);
+        assertEquals(388913.655454, p[0], 1e-3);
+        assertEquals(3804317.827628, p[1], 1e-3);
+        assertEquals(406913.655454, p[2], 1e-3);
+        assertEquals(3792317.827628, p[3], 1e-3);
+        double[] geographic = {7.5, 46.25};
+        GeoLocator.forCrs(CrsInfo.WGS84).orElseThrow().fromLonLat(geographic, 1);
+        assertEquals(7.5, geographic[0], 0);
+        assertEquals(46.25, geographic[1], 0);
+    }
+
+    @Test
     void utmExtentMatchesGdalinfoWgs84Extent() throws IOException {
         // gdalinfo -json testdata/dem/bigtujunga_srtm30m_utm11n.tif → wgs84Extent corners:
         // (-118.3457332, 34.405306) (-118.3429599, 34.2313881) (-117.953114, 34.2350384) (-117.9550826, 34.4089801)

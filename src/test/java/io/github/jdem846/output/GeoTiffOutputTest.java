@@ -252,10 +252,10 @@ class GeoTiffOutputTest {
 
     @Test
     void noDataTextIsWhatGdalParses() {
-        assertEquals("0", GeoTiffWriter.noDataText(0));
-        assertEquals("-9999", GeoTiffWriter.noDataText(-9999));
-        assertEquals("nan", GeoTiffWriter.noDataText(Double.NaN));
-        assertEquals("0.5", GeoTiffWriter.noDataText(0.5));
-        assertEquals(-3.4028235E38f, Float.parseFloat(GeoTiffWriter.noDataText(-3.4028234663852886E38)));
+        assertEquals("0", GeoTiffTags.noDataText(0));
+        assertEquals("-9999", GeoTiffTags.noDataText(-9999));
+        assertEquals("nan", GeoTiffTags.noDataText(Double.NaN));
+        assertEquals("0.5", GeoTiffTags.noDataText(0.5));
+        assertEquals(-3.4028235E38f, Float.parseFloat(GeoTiffTags.noDataText(-3.4028234663852886E38)));
     }
 }

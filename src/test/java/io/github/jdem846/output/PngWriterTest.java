@@ -142,6 +142,30 @@ class PngWriterTest {
         }
     }
 
+    /**
+     * A picture of more than 2 GiB of filtered rows: the segments' checksums combine over a total past 2^31 bytes
+     * (lengths are per segment, the running checksum carries no length). Reference: Adler-32 of data followed by
+     * N zero bytes keeps s1 and adds N·s1 to s2, modulo 65521, by its definition.
+     */
+    @Test
+    void adler32CombinesPastTwoGibibytes() {
+        byte[] data = new byte[1000];
+        new Random(11).nextBytes(data);
+        Adler32 head = new Adler32();
+        head.update(data);
+        Adler32 zeros = new Adler32();
+        zeros.update(new byte[PngWriter.SEGMENT_BYTES]);
+        long combined = head.getValue();
+        long n = 0;
+        while (n <= Integer.MAX_VALUE + (long) PngWriter.SEGMENT_BYTES) {
+            combined = PngWriter.combineAdler32(combined, zeros.getValue(), PngWriter.SEGMENT_BYTES);
+            n += PngWriter.SEGMENT_BYTES;
+        }
+        long s1 = head.getValue() & 0xFFFF;
+        long s2 = ((head.getValue() >>> 16) + n % 65521 * s1) % 65521;
+        assertEquals(s2 << 16 | s1, combined, n + " bytes of zeros after the data");
+    }
+
     @Test
     void zlibHeaderChecksAndNamesTheLevel() {
         int[] flevel = {0, 0, 1, 1, 1, 1, 2, 3, 3, 3};

@@ -1,4 +1,4 @@
-package io.github.jdem846.cli;
+package io.github.jdem846.testing;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -7,9 +7,10 @@ import java.util.Map;
 
 /**
  * A strict, minimal JSON parser for tests (RFC 8259 values: object → Map, array → List, string, number → Double,
- * true/false, null), so that the CLI's hand-written JSON is checked for validity, not just searched.
+ * true/false, null), so that the CLI's hand-written JSON is checked for validity, not just searched, and so that
+ * tests can read {@code gdalinfo -json}.
  */
-final class MiniJson {
+public final class MiniJson {
 
     private final String s;
     private int i;
@@ -18,7 +19,12 @@ final class MiniJson {
         this.s = s;
     }
 
-    static Object parse(String text) {
+    /**
+     * @param text one JSON value
+     * @return the value: Map, List, String, Double, Boolean or null
+     * @throws IllegalArgumentException at the first character that is not valid JSON
+     */
+    public static Object parse(String text) {
         MiniJson p = new MiniJson(text);
         Object v = p.value();
         p.ws();

@@ -1,0 +1,67 @@
+package io.github.jdem846.geo;
+
+/**
+ * Web Mercator (EPSG:3857, "WGS 84 / Pseudo-Mercator"), the projection of web-map tiles: WGS 84 longitude and
+ * latitude put through the spherical Mercator formulas on a sphere of radius {@value #RADIUS} m, x east and y north
+ * in metres, x = R·λ, y = R·ln tan(π/4 + φ/2). The world is the square ±{@link #HALF_WORLD} on both axes, which
+ * ends at latitude ±{@link #MAX_LATITUDE}.
+ */
+public final class WebMercator {
+
+    /** The sphere's radius, the semi-major axis of WGS 84, in metres. */
+    public static final double RADIUS = 6378137.0;
+
+    /** Half the width of the world in metres, π·R: x and y run from −HALF_WORLD to +HALF_WORLD. */
+    public static final double HALF_WORLD = Math.PI * RADIUS;
+
+    /** The latitude where y = HALF_WORLD, 2·atan(e^π) − π/2 in degrees (85.0511287798…°). */
+    public static final double MAX_LATITUDE = Math.toDegrees(2 * Math.atan(Math.exp(Math.PI)) - Math.PI / 2);
+
+    /** The EPSG code. */
+    public static final int EPSG = 3857;
+
+    /** The CRS as this library describes it, on WGS 84, in metres. */
+    public static final CrsInfo CRS = CrsInfo.projected("WGS 84 / Pseudo-Mercator", EPSG, 1.0, Ellipsoid.WGS84);
+
+    private WebMercator() {
+    }
+
+    /** @return x in metres of {@code longitude} degrees (not wrapped: 180° gives HALF_WORLD) */
+    public static double x(double longitude) {
+        return RADIUS * Math.toRadians(longitude);
+    }
+
+    /**
+     * @return y in metres of {@code latitude} degrees, the latitude clamped to ±{@link #MAX_LATITUDE} first (so
+     * the poles map to the edges of the world, not to infinity)
+     */
+    public static double y(double latitude) {
+        double phi = Math.toRadians(Math.max(-MAX_LATITUDE, Math.min(MAX_LATITUDE, latitude)));
+        return RADIUS * Math.log(Math.tan(Math.PI / 4 + phi / 2));
+    }
+
+    /** @return the longitude in degrees of {@code x} metres (not wrapped) */
+    public static double longitude(double x) {
+        return Math.toDegrees(x / RADIUS);
+    }
+
+    /** @return the latitude in degrees of {@code y} metres: atan(sinh(y/R)) */
+    public static double latitude(double y) {
+        return Math.toDegrees(Math.atan(Math.sinh(y / RADIUS)));
+    }
+
+    /** @return the degrees of longitude that {@code dx} metres of x span */
+    public static double longitudeSpan(double dx) {
+        return Math.toDegrees(dx / RADIUS);
+    }
+
+    /**
+     * True for a projected CRS that is Web Mercator: EPSG 3857 (or its older codes 3785 and 900913, or ESRI's
+     * 102100 and 102113).
+     */
+    public static boolean isWebMercator(CrsInfo crs) {
+        Integer code = crs.epsg();
+        return crs.kind() == CrsInfo.Kind.PROJECTED && code != null && crs.linearUnitMeters() == 1.0
+                && (code == EPSG || code == 3785 || code == 900913 || code == 102100 || code == 102113);
+    }
+}

@@ -1,0 +1,29 @@
+package io.github.jdem846.output;
+
+import java.io.Closeable;
+import java.io.IOException;
+
+/**
+ * Encodes one image file band of rows after band of rows, north to south: {@link PngWriter}, {@link GeoTiffWriter}
+ * (strips) or {@link CogWriter}. The whole picture is one band.
+ */
+interface BandEncoder extends Closeable {
+
+    /**
+     * Encodes the next {@code band.height()} rows. The encoder is done with the band's arrays when this returns.
+     *
+     * @throws IllegalStateException when the rows would pass the bottom of the image
+     */
+    void append(Pixels band) throws IOException;
+
+    /**
+     * Completes the file, once every row was appended.
+     *
+     * @throws IllegalStateException when rows are missing
+     */
+    void finish() throws IOException;
+
+    /** Releases the file and any scratch files, finished or not (an unfinished file is incomplete). */
+    @Override
+    void close() throws IOException;
+}

@@ -1,0 +1,192 @@
+package io.github.jdem846.tiles;
+
+import io.github.jdem846.geo.Ellipsoid;
+import io.github.jdem846.io.DemInfo;
+import io.github.jdem846.io.DemInput;
+import io.github.jdem846.io.DemReader;
+import io.github.jdem846.job.JobListener;
+import io.github.jdem846.job.Sun;
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.render.RenderSettings;
+import io.github.jdem846.render.Scene;
+import io.github.jdem846.sun.Observer;
+import io.github.jdem846.sun.SunLightField;
+import io.github.jdem846.sun.TwilightFade;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Objects;
+
+/**
+ * A web-map tile pyramid of one DEM: Web Mercator tiles of 256 × 256 pixels at each zoom of {@code zooms}, every
+ * one rendered at its own resolution from the DEM (the reader box-averages the DEM down to about one cell per tile
+ * pixel for the zoom, and only the cells under a group of tiles are read), with hillshade slopes and cast shadows
+ * measured in ground metres at every latitude, the tint stretched over the whole DEM's range and the cast-shadow
+ * halo of each tile read, so colours, light and shadows run on across tiles and zooms. Written as {@code z/x/y.png}
+ * files in a directory or as one PMTiles archive ({@link TileFormat}); a tile with no data is not written.
+ *
+ * <pre>{@code
+ * TileReport report = TileJob.of(Path.of("dem.tif"), new ZoomRange(8, 12))
+ *         .withScene(Scene.defaults().withShadows(ShadowAlgorithm.SWEEP))
+ *         .run(Path.of("relief.pmtiles"), JobListener.NONE);
+ * }</pre>
+ *
+ * <p>Immutable. Interrupting the calling thread stops a run with {@link InterruptedException} and nothing written.
+ *
+ * @param input            the DEM file, or files read as one grid
+ * @param zooms            the zoom levels
+ * @param scene            the stages and their settings (its light, tint range and fade are set from {@code sun}
+ *                         and the DEM)
+ * @param sun              the light: fixed, or the sun at a date and time seen from the DEM's centre (or {@link
+ *                         Sun#place()}), the same for every tile; a sun per tile is not allowed
+ * @param execution        tiles rendered at once ({@link RenderSettings#parallelism()}) and the renderer's tile
+ *                         size; the tiles do not depend on them
+ * @param pngCompression   deflate level of the tiles, 0 to 9
+ */
+public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, RenderSettings execution,
+                      int pngCompression) {
+
+    /** Deflate level of the tiles by default: zlib's default, a good size for serving. */
+    public static final int DEFAULT_PNG_COMPRESSION = 6;
+
+    public TileJob {
+        Objects.requireNonNull(input, "input");
+        Objects.requireNonNull(zooms, "zooms");
+        Objects.requireNonNull(scene, "scene");
+        Objects.requireNonNull(sun, "sun");
+        Objects.requireNonNull(execution, "execution");
+        if (pngCompression < 0 || pngCompression > 9) {
+            throw new IllegalArgumentException("PNG compression level must be 0 to 9, got " + pngCompression);
+        }
+    }
+
+    /** Tiles of {@code dem} at {@code zooms} with the original's scene and light, on every processor. */
+    public static TileJob of(Path dem, ZoomRange zooms) {
+        return of(DemInput.of(dem), zooms);
+    }
+
+    /** Tiles of {@code dem} (one file or several read as one grid) at {@code zooms}, with the defaults. */
+    public static TileJob of(DemInput dem, ZoomRange zooms) {
+        return new TileJob(dem, zooms, Scene.defaults(), Sun.ORIGINAL_DEFAULT, RenderSettings.defaults(),
+                DEFAULT_PNG_COMPRESSION);
+    }
+
+    /** @return a copy with other zoom levels */
+    public TileJob withZooms(ZoomRange value) {
+        return new TileJob(input, value, scene, sun, execution, pngCompression);
+    }
+
+    /** @return a copy with another scene */
+    public TileJob withScene(Scene value) {
+        return new TileJob(input, zooms, value, sun, execution, pngCompression);
+    }
+
+    /** @return a copy with another light */
+    public TileJob withSun(Sun value) {
+        return new TileJob(input, zooms, scene, value, execution, pngCompression);
+    }
+
+    /** @return a copy with other threads and renderer tile size */
+    public TileJob withExecution(RenderSettings value) {
+        return new TileJob(input, zooms, scene, sun, value, pngCompression);
+    }
+
+    /** @return a copy with another PNG deflate level */
+    public TileJob withPngCompression(int value) {
+        return new TileJob(input, zooms, scene, sun, execution, value);
+    }
+
+    /**
+     * Renders the pyramid and writes it to {@code output}: a {@code .pmtiles} archive, or else a directory that
+     * does not exist yet or is empty. Everything is written to a hidden file or directory beside it first and
+     * renamed into place at the end; a failure or an interrupt leaves nothing.
+     *
+     * @param listener told of progress ("tiles", done, total), notices and the sun computed
+     * @return what was written
+     * @throws IOException              when the DEM cannot be read or the output not written (naming the file)
+     * @throws IllegalArgumentException when the settings do not make sense for map tiles (a sun per tile, a fixed
+     *                                  xy-scale, a DEM whose CRS is unknown), saying why
+     * @throws InterruptedException     when the calling thread is interrupted
+     */
+    public TileReport run(Path output, JobListener listener) throws IOException, InterruptedException {
+        Objects.requireNonNull(output, "output");
+        Objects.requireNonNull(listener, "listener");
+        requireTileable();
+        TileFormat format = TileFormat.of(output);
+        if (format == TileFormat.PMTILES) {
+            PmTilesSink.checkTarget(output);
+        } else {
+            DirectorySink.checkTarget(output);
+        }
+        refuseInputAsOutput(output);
+        DemInfo info = DemReader.inspect(input).withDefaultEllipsoid(Ellipsoid.WGS84);
+        SourceProjection projection = SourceProjection.of(info.geometry(), info.source());
+        for (String notice : info.notices()) {
+            listener.notice(notice);
+        }
+        ElevationStatistics range = DemReader.statistics(input);
+        if (range.isEmpty()) {
+            throw new IOException(info.source() + " holds no elevations (every cell is no-data)");
+        }
+        listener.phaseDone("read");
+        Scene lit = sceneFor(info, range, listener);
+        try (TileSink sink = format == TileFormat.PMTILES ? new PmTilesSink(output) : new DirectorySink(output)) {
+            PyramidRun run = new PyramidRun(this, projection, lit, range, sink, listener);
+            TileReport report = run.execute(output, format);
+            listener.phaseDone("render");
+            if (report.written() == 0) {
+                throw new IOException("no tile of zoom " + zooms + " holds data of " + info.source()
+                        + ": nothing written");
+            }
+            String name = input.first().getFileName().toString();
+            sink.commit(new TileSink.TileSetInfo(name, "Shaded relief of " + name + " by jdem846", zooms,
+                    projection.extent()));
+            listener.phaseDone("write");
+            return report;
+        }
+    }
+
+    /**
+     * Checks the settings map tiles cannot honour, before anything is read.
+     *
+     * @throws IllegalArgumentException for a sun per tile (tiles would not match at their seams) or a fixed
+     *                                  xy-scale (tile cells are measured on the ground, row by row)
+     */
+    public void requireTileable() {
+        if (sun.perTile()) {
+            throw new IllegalArgumentException("a sun per tile is not used for map tiles: every tile gets the sun "
+                    + "seen from the DEM's centre (or the place given), so that light matches across tiles");
+        }
+        if (!Double.isNaN(scene.hillshadeOptions().horizontalScale())) {
+            throw new IllegalArgumentException("a fixed xy-scale does not apply to map tiles: their cells are "
+                    + "measured in ground metres row by row");
+        }
+    }
+
+    /** The scene with the light, the fade, the whole DEM's tint range and the lowest elevation for the sweep. */
+    Scene sceneFor(DemInfo info, ElevationStatistics range, JobListener listener) {
+        LightDirection direction;
+        double fade = 0;
+        if (sun.byTime()) {
+            SunLightField field = SunLightField.of(info.geometry(), sun.time(), sun.place(), 0, Observer.SEA_LEVEL);
+            direction = field.central();
+            listener.sun(field.centralSun());
+            if (sun.twilight()) {
+                fade = TwilightFade.ORIGINAL.darkening(field.centralSun().zenithDegrees());
+            }
+        } else {
+            direction = sun.direction();
+        }
+        Scene s = scene.withLight(direction).withFade(fade).withTintRange(range);
+        return s.hasShadows() ? s.withShadowOptions(s.shadowOptions().withTerrainMinimum(range.min())) : s;
+    }
+
+    private void refuseInputAsOutput(Path output) throws IOException {
+        Path out = output.toAbsolutePath().normalize();
+        for (Path f : DemReader.filesOf(input)) {
+            if (f.toAbsolutePath().normalize().equals(out)) {
+                throw new IOException("the output " + output + " is the input DEM " + f + ": name another output");
+            }
+        }
+    }
+}

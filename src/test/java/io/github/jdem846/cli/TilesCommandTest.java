@@ -1,0 +1,115 @@
+package io.github.jdem846.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * {@code jdem846 tiles} end to end on Luxembourg (30″, no-data outside the border, so some tiles hold nothing): the
+ * tiles and the summary, the archive, and the exit status of bad usage (2) and of outputs that cannot be written (1).
+ */
+class TilesCommandTest {
+
+    private static final String LUX = "testdata/dem/luxembourg_srtm30s_wgs84.tif";
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void writesTheTilesAndSaysHowMany() throws IOException {
+        Path out = dir.resolve("lux");
+        CliRun run = CliRun.of("tiles", LUX, "--zoom", "9-10", "-o", out.toString(), "--png-level", "1");
+        assertEquals(0, run.exitCode(), run.err());
+        long files;
+        try (Stream<Path> s = Files.walk(out)) {
+            files = s.filter(p -> p.toString().endsWith(".png")).count();
+        }
+        // zoom 9: 4 tiles; zoom 10: 12 overlap the box, and one corner holds only no-data
+        assertEquals(15, files);
+        assertTrue(run.out().contains("wrote 15 tiles"), run.out());
+        assertTrue(run.out().contains("1 tiles without data left out"), run.out());
+        assertTrue(run.out().contains("zoom 10: 11 tiles written of 12"), run.out());
+
+        Path archive = dir.resolve("lux.pmtiles");
+        CliRun pm = CliRun.of("tiles", LUX, "--zoom", "9", "-o", archive.toString(), "-q", "--shadows", "sweep");
+        assertEquals(0, pm.exitCode(), pm.err());
+        assertEquals("", pm.out());
+        byte[] head = Files.readAllBytes(archive);
+        assertEquals("PMTiles", new String(head, 0, 7, java.nio.charset.StandardCharsets.US_ASCII));
+    }
+
+    @Test
+    void aMosaicDirectoryMakesTheTilesOfTheWholeDem() throws IOException {
+        Path whole = Path.of("testdata/dem/jacksboro_srtm3s_wgs84.flt");
+        io.github.jdem846.raster.Dem dem = io.github.jdem846.io.DemReader.read(whole);
+        Path tiles = Files.createDirectories(dir.resolve("quarters"));
+        io.github.jdem846.testing.DemTiles.gridFloat(dem,
+                io.github.jdem846.testing.DemTiles.quarters(dem.width(), dem.height(), dem.width() / 2,
+                        dem.height() / 2, 1),
+                tiles, "jb", Path.of("testdata/dem/jacksboro_srtm3s_wgs84.prj"));
+        Path fromWhole = dir.resolve("whole");
+        Path fromTiles = dir.resolve("fromtiles");
+        CliRun a = CliRun.of("tiles", whole.toString(), "--zoom", "10-11", "-o", fromWhole.toString(), "-q",
+                "--shadows", "sweep", "--sun-elevation", "6");
+        assertEquals(0, a.exitCode(), a.err());
+        CliRun b = CliRun.of("tiles", tiles.toString(), "--zoom", "10-11", "-o", fromTiles.toString(), "-q",
+                "--shadows", "sweep", "--sun-elevation", "6");
+        assertEquals(0, b.exitCode(), b.err());
+        assertTrue(b.err().contains("4 DEM files"), b.err());
+        java.util.List<Path> pngs;
+        try (Stream<Path> s = Files.walk(fromWhole)) {
+            pngs = s.filter(p -> p.toString().endsWith(".png")).map(fromWhole::relativize).sorted().toList();
+        }
+        try (Stream<Path> s = Files.walk(fromTiles)) {
+            assertEquals(pngs, s.filter(p -> p.toString().endsWith(".png")).map(fromTiles::relativize).sorted()
+                    .toList(), "the same tiles");
+        }
+        assertTrue(pngs.size() > 4, "tiles at two zooms: " + pngs);
+        for (Path png : pngs) {
+            org.junit.jupiter.api.Assertions.assertArrayEquals(Files.readAllBytes(fromWhole.resolve(png)),
+                    Files.readAllBytes(fromTiles.resolve(png)), png + " of the four quarters is that of the DEM");
+        }
+    }
+
+    @Test
+    void badUsageIsExitStatusTwo() {
+        String out = dir.resolve("t").toString();
+        String[][] bad = {
+            {"tiles", LUX, "-o", out},
+            {"tiles", LUX, "--zoom", "12-3", "-o", out},
+            {"tiles", LUX, "--zoom", "0-23", "-o", out},
+            {"tiles", LUX, "--zoom", "3", "-o", dir.resolve("t.mbtiles").toString()},
+            {"tiles", LUX, "--zoom", "3", "-o", out, "--xy-scale", "111120"},
+            {"tiles", LUX, "--zoom", "3", "-o", out, "--sun-time", "2024-06-21T12:00Z", "--sun-per-tile"},
+            {"tiles", LUX, "--zoom", "3", "-o", out, "--png-level", "10"},
+        };
+        for (String[] args : bad) {
+            CliRun run = CliRun.of(args);
+            assertEquals(2, run.exitCode(), String.join(" ", args) + ": " + run.err());
+            assertTrue(run.err().startsWith("jdem846: "), run.err());
+            assertFalse(Files.exists(dir.resolve("t")));
+        }
+    }
+
+    @Test
+    void outputsThatCannotBeWrittenAreExitStatusOne() throws IOException {
+        Path full = Files.createDirectories(dir.resolve("full"));
+        Files.writeString(full.resolve("mine.txt"), "keep");
+        CliRun run = CliRun.of("tiles", LUX, "--zoom", "8", "-o", full.toString());
+        assertEquals(1, run.exitCode());
+        assertTrue(run.err().contains("not empty"), run.err());
+        CliRun missing = CliRun.of("tiles", "no-such-dem.tif", "--zoom", "8", "-o", dir.resolve("m").toString());
+        assertEquals(1, missing.exitCode());
+        assertTrue(missing.err().contains("no-such-dem.tif"), missing.err());
+        try (Stream<Path> left = Files.list(dir)) {
+            assertEquals(1, left.count(), "nothing but the directory that was there");
+        }
+    }
+}
