@@ -37,6 +37,16 @@ class MemoryOptionTest {
         assertArrayEquals(Files.readAllBytes(whole), Files.readAllBytes(tiled));
     }
 
+    @Test
+    void aCloudOptimizedGeoTiffInTilesIsTheSameFile() throws IOException {
+        Path whole = dir.resolve("whole-cog.tif");
+        Path tiled = dir.resolve("tiled-cog.tif");
+        String[] common = {"hillshade", JACKSBORO, "--cog", "-q", "--threads", "2"};
+        assertEquals(0, CliRun.of(concat(common, "-o", whole.toString())).exitCode());
+        assertEquals(0, CliRun.of(concat(common, "-o", tiled.toString(), "--memory", "100k")).exitCode());
+        assertArrayEquals(Files.readAllBytes(whole), Files.readAllBytes(tiled));
+    }
+
     private static String[] concat(String[] a, String... b) {
         String[] out = java.util.Arrays.copyOf(a, a.length + b.length);
         System.arraycopy(b, 0, out, a.length, b.length);
