@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.testing.DemTiles;
+import io.github.jdem846.testing.MiniJson;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
