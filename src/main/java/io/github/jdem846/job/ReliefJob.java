@@ -296,7 +296,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
             GeoReference geo = GeoReference.of(picture);
             return rgba ? ImageOutput.openRgba(file, picture.width(), picture.height(), geo, o)
                     : ImageOutput.openGray(file, picture.width(), picture.height(), geo, o);
-        }, (result) -> result.write(file, options), listener);
+        }, result -> result.write(file, options), listener);
     }
 
     /** Opens the image a picture of {@code picture}'s size and place is written to. */
