@@ -51,7 +51,7 @@ final class CliExceptionHandler implements CommandLine.IExecutionExceptionHandle
         if (message == null || message.isBlank()) {
             message = ex.getClass().getSimpleName();
         }
-        if (ex instanceof InsufficientHeapException) {
+        if (ex instanceof InsufficientHeapException heap && !heap.givesAdvice()) {
             message += "; " + Main.HEAP_ADVICE;
         }
         err.println("jdem846: " + message);

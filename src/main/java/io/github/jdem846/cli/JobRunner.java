@@ -15,7 +15,8 @@ import picocli.CommandLine.Model.CommandSpec;
 /**
  * Runs a rendering command's {@link ReliefJob} for a person at a terminal: the output checked against the input
  * first, the kernels warmed up while the file is read ({@link KernelWarmUp}), a progress bar, notices and the sun
- * used on stderr, the phase times with {@code --verbose}; an output name without a known image extension, and a
+ * used on stderr, the phase times with {@code --verbose}; {@code --memory} as the job's memory budget (a larger
+ * picture is rendered in tiles); an output name without a known image extension, and a
  * window or size that does not fit the grid, reported as bad usage.
  */
 final class JobRunner {
@@ -41,7 +42,8 @@ final class JobRunner {
      * @param sunTime the {@code --sun-time} text as given (for the line saying which sun was used), or null
      * @return the exit status, 0
      */
-    int run(ReliefJob job, String sunTime) throws Exception {
+    int run(ReliefJob command, String sunTime) throws Exception {
+        ReliefJob job = command.withMemory(execution.memory());
         PrintWriter err = spec.commandLine().getErr();
         PhaseTimes times = new PhaseTimes();
         WriteOptions options = output.writeOptions(execution);

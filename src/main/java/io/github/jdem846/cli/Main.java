@@ -90,8 +90,9 @@ public final class Main implements Runnable {
     }
 
     /** What to do about a picture too large for the heap. */
-    static final String HEAP_ADVICE = "make a smaller picture with --scale, --width or --window, or give Java more"
-            + " heap, e.g. java -Xmx8g -jar jdem846-cli.jar …";
+    static final String HEAP_ADVICE = "make a smaller picture with --scale, --width or --window, lower --memory"
+            + " (a picture above it is rendered in tiles), or give Java more heap, e.g. java -Xmx8g -jar"
+            + " jdem846-cli.jar …";
 
     private static String heapSize() {
         double mib = Runtime.getRuntime().maxMemory() / 1048576.0;

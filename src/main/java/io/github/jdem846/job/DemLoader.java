@@ -10,7 +10,9 @@ import io.github.jdem846.io.Window;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.DemResampler;
 import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.render.OutputSize;
+import io.github.jdem846.shadow.CellWindow;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Objects;
@@ -19,7 +21,9 @@ import java.util.Objects;
  * Reads exactly the part of a DEM file a picture needs: the window (or the whole grid) plus a halo of cells that
  * the stages read around it, at the output resolution. Shrinking reads a decimated grid (box average, only the
  * blocks needed are decoded) and finishes with an area-weighted resample to the exact size, so no stage ever runs
- * at full resolution for a smaller picture.
+ * at full resolution for a smaller picture. The read is planned from the header first ({@link #plan}); the grid
+ * planned is then loaded whole ({@link #load(DemInput, PicturePlan, boolean, FileStatistics)}) or piece by piece
+ * for a picture rendered in tiles ({@link #loadRegion}), with the same values.
  */
 final class DemLoader {
 
@@ -86,8 +90,8 @@ final class DemLoader {
                          ElevationStatistics fileStatistics) {
 
         /** @return the output window's cells within {@code dem} */
-        public io.github.jdem846.shadow.CellWindow area() {
-            return new io.github.jdem846.shadow.CellWindow(col, row, width, height);
+        public CellWindow area() {
+            return new CellWindow(col, row, width, height);
         }
 
         /** @return true when the grid holds nothing but the output window */
@@ -143,19 +147,32 @@ final class DemLoader {
     /** As {@link #load(Path, Window, OutputSize, Halo, boolean, Ellipsoid, int)} for one file or a mosaic. */
     public static Loaded load(DemInput file, Window window, OutputSize size, Halo halo, boolean fileStatistics,
                               Ellipsoid body, int bytesPerPixel) throws IOException {
-        Objects.requireNonNull(size, "size");
-        Objects.requireNonNull(halo, "halo");
         Objects.requireNonNull(body, "body");
         DemInfo info = DemReader.inspect(file).withDefaultEllipsoid(body);
+        StreamedStatistics streamed = new StreamedStatistics(file);
+        PicturePlan plan = plan(info, body, window, size, halo, streamed);
+        long maxHeap = Runtime.getRuntime().maxMemory();
+        InsufficientHeapException.requireFits(plan.gridCells(), plan.width(), plan.height(), bytesPerPixel, maxHeap);
+        return load(file, plan, fileStatistics, streamed);
+    }
+
+    /**
+     * Plans the picture of {@code window} (null = the whole grid) at {@code size} with {@code halo}, from the
+     * header alone (the halo may stream the file's statistics through {@code statistics}).
+     *
+     * @param info the file's header, on {@code body}
+     * @throws io.github.jdem846.raster.GridRequestException when the window or the size do not fit the grid
+     */
+    static PicturePlan plan(DemInfo info, Ellipsoid body, Window window, OutputSize size, Halo halo,
+                            FileStatistics statistics) throws IOException {
+        Objects.requireNonNull(size, "size");
+        Objects.requireNonNull(halo, "halo");
         Window.Cells win = window == null ? Window.cells(0, 0, info.width(), info.height())
                 : window.resolve(info.geometry());
         int[] px = size.pixelsFor(win.width(), win.height());
-        long maxHeap = Runtime.getRuntime().maxMemory();
-        InsufficientHeapException.requireFits((long) px[0] * px[1], px[0], px[1], bytesPerPixel, maxHeap);
         double fx = (double) win.width() / px[0];
         double fy = (double) win.height() / px[1];
-        StreamedStatistics streamed = new StreamedStatistics(file);
-        int[] h = halo.cells(streamed, info, win);
+        int[] h = halo.cells(statistics, info, win);
         // Halo in source cells, rounded up to whole output pixels so the window keeps pixel-aligned edges.
         int west = haloCells(h[0], fx, win.col());
         int north = haloCells(h[1], fy, win.row());
@@ -163,51 +180,83 @@ final class DemLoader {
         int south = haloCells(h[3], fy, info.height() - win.row() - win.height());
         Window.Cells read = Window.cells(win.col() - west, win.row() - north, win.width() + west + east,
                 win.height() + north + south);
-        // (saturated at the int range: DemResampler refuses a grid larger than one Java array)
+        // (saturated at the int range: a grid larger than one Java array is rendered in tiles or refused)
         int outW = (int) Math.min(Integer.MAX_VALUE, Math.max(1, Math.round(read.width() / fx)));
         int outH = (int) Math.min(Integer.MAX_VALUE, Math.max(1, Math.round(read.height() / fy)));
-        // the halo adds cells around the picture: the grid at output resolution again, with them
-        InsufficientHeapException.requireFits((long) outW * outH, px[0], px[1], bytesPerPixel, maxHeap);
         int decimation = (int) Math.max(1, Math.floor(Math.min(fx, fy) + 1e-9));
-        LoadedDem loaded = DemReader.load(file, new ReadRequest(read, decimation));
-        Dem read0 = loaded.dem();
-        Dem onBody = read0.withGeometry(read0.geometry().withDefaultEllipsoid(body));
-        Dem dem = DemResampler.resample(onBody, outW, outH);
         int col = (int) Math.round(west / fx);
         int row = (int) Math.round(north / fy);
         int w = Math.min(px[0], outW - col);
         int hgt = Math.min(px[1], outH - row);
+        return new PicturePlan(info, body, win, read, decimation, outW, outH, new CellWindow(col, row, w, hgt));
+    }
+
+    /**
+     * Loads the grid {@code plan} describes.
+     *
+     * @param fileStatistics also give the whole file's elevation range (taken during the read when it covers the
+     *                       whole file, decimated or not; otherwise from {@code streamed}, in a pass of its own
+     *                       without holding the grid, if it has not streamed them yet)
+     */
+    static Loaded load(DemInput file, PicturePlan plan, boolean fileStatistics, FileStatistics streamed)
+            throws IOException {
+        Window.Cells read = plan.read();
+        DemInfo info = plan.info();
+        LoadedDem loaded = DemReader.load(file, new ReadRequest(read, plan.decimation()));
+        Dem read0 = loaded.dem();
+        Dem onBody = read0.withGeometry(read0.geometry().withDefaultEllipsoid(plan.body()));
+        Dem dem = DemResampler.resample(onBody, plan.gridWidth(), plan.gridHeight());
         ElevationStatistics stats = null;
         if (fileStatistics) {
             // a read of the whole file, decimated or not, took the file's range on the way
             boolean wholeFile = read.width() == info.width() && read.height() == info.height();
             stats = wholeFile ? loaded.sourceStatistics() : streamed.get();
         }
-        return new Loaded(loaded.info().withDefaultEllipsoid(body), dem, col, row, w, hgt, stats);
+        CellWindow a = plan.area();
+        return new Loaded(loaded.info().withDefaultEllipsoid(plan.body()), dem, a.col(), a.row(), a.width(),
+                a.height(), stats);
     }
 
     /**
-     * As {@link #load(Path, Window, OutputSize, Halo, boolean, Ellipsoid, int)} for the bundled sample DEM ({@link
-     * DemReader#SAMPLE_RESOURCE}), copied to a temporary file for the read and deleted after it.
+     * The cells {@code region} of the grid {@code plan} describes (its coordinates: halo included), read from the
+     * file without the rest: the same values, bit for bit, as those cells of {@link #load}'s grid. A decimated
+     * read starts on a whole block of the plan's read, so the block means are the same; a resampled grid is
+     * resampled from the part of the decimated read that region needs ({@link DemResampler#resampleRegion}). The
+     * grid's geometry is {@code plan.gridGeometry().window(region)}.
      */
-    public static Loaded loadSample(Window window, OutputSize size, Halo halo, boolean fileStatistics,
-                                    Ellipsoid body, int bytesPerPixel) throws IOException {
-        Path tmp = java.nio.file.Files.createTempFile("jdem846-sample-", ".tif");
-        try {
-            try (java.io.InputStream in = DemReader.class.getResourceAsStream(DemReader.SAMPLE_RESOURCE)) {
-                if (in == null) {
-                    throw new IOException("the bundled sample DEM is missing from the jar");
-                }
-                java.nio.file.Files.copy(in, tmp, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-            }
-            return load(tmp, window, size, halo, fileStatistics, body, bytesPerPixel);
-        } finally {
-            java.nio.file.Files.deleteIfExists(tmp);
+    static LoadedDem loadRegion(DemInput file, PicturePlan plan, CellWindow region) throws IOException {
+        Window.Cells read = plan.read();
+        int d = plan.decimation();
+        GridGeometry geometry = plan.gridGeometry().window(region.col(), region.row(), region.width(),
+                region.height());
+        if (!plan.resampled()) {
+            // whole blocks of the plan's read (the last one may be partial, as in the whole read)
+            int c0 = read.col() + region.col() * d;
+            int r0 = read.row() + region.row() * d;
+            int c1 = (int) Math.min(read.col() + (long) read.width(), read.col() + (long) region.colEnd() * d);
+            int r1 = (int) Math.min(read.row() + (long) read.height(), read.row() + (long) region.rowEnd() * d);
+            LoadedDem part = DemReader.load(file, new ReadRequest(Window.cells(c0, r0, c1 - c0, r1 - r0), d));
+            return new LoadedDem(part.info(), part.dem().withGeometry(geometry), part.sourceStatistics());
         }
+        int[] cols = DemResampler.sourceSpan(plan.decimatedWidth(), plan.gridWidth(), region.col(),
+                region.width());
+        int[] rows = DemResampler.sourceSpan(plan.decimatedHeight(), plan.gridHeight(), region.row(),
+                region.height());
+        int c0 = read.col() + cols[0] * d;
+        int r0 = read.row() + rows[0] * d;
+        int c1 = (int) Math.min(read.col() + (long) read.width(), read.col() + (long) cols[1] * d);
+        int r1 = (int) Math.min(read.row() + (long) read.height(), read.row() + (long) rows[1] * d);
+        LoadedDem read0 = DemReader.load(file, new ReadRequest(Window.cells(c0, r0, c1 - c0, r1 - r0), d));
+        Dem part = read0.dem();
+        float[] values = DemResampler.resampleRegion(part, cols[0], rows[0], plan.decimatedWidth(),
+                plan.decimatedHeight(), plan.gridWidth(), plan.gridHeight(), region.col(), region.row(),
+                region.width(), region.height());
+        return new LoadedDem(read0.info(), Dem.ofNormalized(values, geometry, part.declaredNoData()),
+                read0.sourceStatistics());
     }
 
     /** {@link FileStatistics} of one file: streamed at most once. */
-    private static final class StreamedStatistics implements FileStatistics {
+    static final class StreamedStatistics implements FileStatistics {
         private final DemInput file;
         private ElevationStatistics statistics;
 

@@ -5,7 +5,9 @@ import io.github.jdem846.sun.SunPosition;
 
 /**
  * Hears what a {@link ReliefJob} does: progress of its stages, notices for the user, the end of each phase and the
- * sun it computed. All methods have empty defaults; progress may be called from worker threads.
+ * sun it computed. All methods have empty defaults; progress may be called from worker threads. A picture rendered
+ * in tiles reports one stage, named after the product's phase, counting the picture's pixels (a {@code long}: there
+ * may be more than 2³¹), and only ever growing.
  */
 public interface JobListener extends RenderProgress {
 
@@ -28,7 +30,10 @@ public interface JobListener extends RenderProgress {
     /**
      * A phase ended.
      *
-     * @param phase "read", then the product's stage ("render", "hillshade", "tint", "shadows"), then "write"
+     * @param phase "read", then the product's stage ("render", "hillshade", "tint", "shadows"), then "write". For
+     *              a picture rendered in tiles, "read" ends once the header is read and the file's statistics
+     *              streamed, the product's stage covers reading, rendering and writing the tiles, and "write"
+     *              finishing the file
      */
     default void phaseDone(String phase) {
     }
@@ -36,7 +41,7 @@ public interface JobListener extends RenderProgress {
     /**
      * The sun by date and time was computed.
      *
-     * @param sun its position at the centre of the grid read
+     * @param sun its position at the centre of the picture
      */
     default void sun(SunPosition sun) {
     }

@@ -1,26 +1,29 @@
 package io.github.jdem846.job;
 
-import io.github.jdem846.internal.Clamp;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemInput;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.Window;
+import io.github.jdem846.output.GeoReference;
+import io.github.jdem846.output.ImageOutput;
+import io.github.jdem846.output.ImageSink;
 import io.github.jdem846.output.InputProtection;
 import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.output.WriteResult;
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.render.OutputSize;
 import io.github.jdem846.render.RenderSettings;
-import io.github.jdem846.render.RenderedImage;
-import io.github.jdem846.render.Renderer;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowOptions;
 import io.github.jdem846.sun.Body;
+import io.github.jdem846.sun.SunPosition;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
@@ -28,8 +31,9 @@ import java.util.Objects;
 /**
  * One picture of one DEM file, from file to pixels (and to a file): plans the read (the window, the halo each stage
  * needs around it, the decimation for a smaller picture), reads only that, lights the grid with the {@link Sun}
- * (fixed, or the real sun at a date and time over the cells read), renders the {@link Product} and hands it back
- * or writes it. Every command of the CLI is this job with options parsed.
+ * (fixed, or the real sun at a date and time over the picture), renders the {@link Product} and hands it back or
+ * writes it; a picture larger than the memory budget is written tile by tile ({@link #runAndWrite}). Every
+ * command of the CLI is this job with options parsed.
  *
  * <pre>{@code
  * ReliefResult relief = ReliefJob.of(Path.of("dem.tif"))
@@ -55,9 +59,12 @@ import java.util.Objects;
  * @param body      the body a DEM whose file names no ellipsoid lies on (metric cell sizes, the sun by date and
  *                  time)
  * @param execution threads and tile size; the result does not depend on them
+ * @param memory    the most heap bytes the job's grids, layers and pictures may take at once, or 0 for half the
+ *                  heap's maximum ({@link #memoryBudget()}): {@link #runAndWrite} renders a picture that needs more
+ *                  in tiles (docs/scale.md); the result does not depend on it
  */
 public record ReliefJob(DemInput input, Product product, Scene scene, Window window, OutputSize size, Sun sun,
-                        Body body, RenderSettings execution) {
+                        Body body, RenderSettings execution, long memory) {
 
     public ReliefJob {
         Objects.requireNonNull(product, "product");
@@ -66,6 +73,27 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         Objects.requireNonNull(sun, "sun");
         Objects.requireNonNull(body, "body");
         Objects.requireNonNull(execution, "execution");
+        if (memory < 0) {
+            throw new IllegalArgumentException("a memory budget must be a number of bytes ≥ 0 (0 = half the heap),"
+                    + " got " + memory);
+        }
+    }
+
+    /**
+     * A job with the automatic memory budget (half the heap's maximum).
+     *
+     * @param input     the DEM file or files, or {@code null} for the bundled sample DEM
+     * @param product   what to make
+     * @param scene     the stages and their settings
+     * @param window    the part of the DEM to draw, or {@code null} for all of it
+     * @param size      the picture's size
+     * @param sun       the light
+     * @param body      the body a DEM whose file names no ellipsoid lies on
+     * @param execution threads and tile size
+     */
+    public ReliefJob(DemInput input, Product product, Scene scene, Window window, OutputSize size, Sun sun,
+                     Body body, RenderSettings execution) {
+        this(input, product, scene, window, size, sun, body, execution, 0);
     }
 
     /**
@@ -87,7 +115,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      */
     public static ReliefJob of(DemInput dem) {
         return new ReliefJob(dem, Product.RELIEF, Scene.defaults(), null, OutputSize.FULL, Sun.ORIGINAL_DEFAULT,
-                Body.EARTH, RenderSettings.defaults());
+                Body.EARTH, RenderSettings.defaults(), 0);
     }
 
     /**
@@ -106,7 +134,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withProduct(Product value) {
-        return new ReliefJob(input, value, scene, window, size, sun, body, execution);
+        return new ReliefJob(input, value, scene, window, size, sun, body, execution, memory);
     }
 
     /**
@@ -116,7 +144,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withScene(Scene value) {
-        return new ReliefJob(input, product, value, window, size, sun, body, execution);
+        return new ReliefJob(input, product, value, window, size, sun, body, execution, memory);
     }
 
     /**
@@ -126,7 +154,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withWindow(Window value) {
-        return new ReliefJob(input, product, scene, value, size, sun, body, execution);
+        return new ReliefJob(input, product, scene, value, size, sun, body, execution, memory);
     }
 
     /**
@@ -136,7 +164,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withSize(OutputSize value) {
-        return new ReliefJob(input, product, scene, window, value, sun, body, execution);
+        return new ReliefJob(input, product, scene, window, value, sun, body, execution, memory);
     }
 
     /**
@@ -146,7 +174,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withSun(Sun value) {
-        return new ReliefJob(input, product, scene, window, size, value, body, execution);
+        return new ReliefJob(input, product, scene, window, size, value, body, execution, memory);
     }
 
     /**
@@ -156,7 +184,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withBody(Body value) {
-        return new ReliefJob(input, product, scene, window, size, sun, value, execution);
+        return new ReliefJob(input, product, scene, window, size, sun, value, execution, memory);
     }
 
     /**
@@ -166,34 +194,53 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withExecution(RenderSettings value) {
-        return new ReliefJob(input, product, scene, window, size, sun, body, value);
+        return new ReliefJob(input, product, scene, window, size, sun, body, value, memory);
     }
 
     /**
-     * Reads what the picture needs and renders it.
+     * A copy with another memory budget.
+     *
+     * @param bytes the most heap bytes the job may hold at once, or 0 for half the heap's maximum
+     * @return the new job
+     */
+    public ReliefJob withMemory(long bytes) {
+        return new ReliefJob(input, product, scene, window, size, sun, body, execution, bytes);
+    }
+
+    /**
+     * The memory budget in bytes: {@link #memory()} when given (at most the heap's maximum), else half the heap's
+     * maximum; the readers' and encoders' buffers and the JVM's own take the rest.
+     *
+     * @return the budget
+     */
+    public long memoryBudget() {
+        long max = Runtime.getRuntime().maxMemory();
+        return memory > 0 ? Math.min(memory, max) : max / 2;
+    }
+
+    /**
+     * Reads what the picture needs and renders it, in memory.
      *
      * @param listener told of progress, notices, the sun used and the end of each phase
      * @return the picture
-     * @throws IOException              naming the file when it cannot be read ({@link
-     *                                  io.github.jdem846.io.DemFormatException})
-     * @throws IllegalArgumentException when the window lies outside the grid, or the sun cannot be placed
-     * @throws InterruptedException     when the calling thread is interrupted
+     * @throws IOException               naming the file when it cannot be read ({@link
+     *                                   io.github.jdem846.io.DemFormatException})
+     * @throws IllegalArgumentException  when the window lies outside the grid, or the sun cannot be placed
+     * @throws InsufficientHeapException when the grid and the picture cannot fit in the heap (written to a file
+     *                                   with {@link #runAndWrite}, such a picture is rendered in tiles)
+     * @throws InterruptedException      when the calling thread is interrupted
      */
     public ReliefResult run(JobListener listener) throws IOException, InterruptedException {
         Objects.requireNonNull(listener, "listener");
         requireDrawable();
         Scene s = productScene();
-        DemLoader.Loaded loaded = load(s);
-        listener.phaseDone("read");
-        for (String notice : loaded.info().notices()) {
-            listener.notice(notice);
+        try (InputFile in = InputFile.open(input)) {
+            Planned planned = plan(in.input(), s);
+            PicturePlan plan = planned.plan();
+            InsufficientHeapException.requireFits(plan.gridCells(), plan.width(), plan.height(),
+                    JobMemory.of(product, s).perPixel(), Runtime.getRuntime().maxMemory());
+            return renderInMemory(in.input(), planned, s, listener);
         }
-        ScaleNotice.of(loaded.info().geometry()).ifPresent(listener::notice);
-        if (s.hasShadows()) {
-            s = s.withShadowOptions(forLoadedGrid(s.shadowOptions(), loaded));
-        }
-        return render(loaded.dem(), loaded.info(), loaded.area(), s.withTintRange(loaded.fileStatistics()),
-                listener);
     }
 
     /**
@@ -215,58 +262,192 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         if (window != null || !size.equals(OutputSize.FULL)) {
             throw new IllegalArgumentException("a grid in memory is rendered whole: crop or resample it first");
         }
-        return render(dem, null, CellWindow.whole(dem.width(), dem.height()), productScene(), listener);
-    }
-
-    /** Lights and renders {@code area} of {@code dem} (the rest is halo) with {@code s}. */
-    private ReliefResult render(Dem dem, DemInfo source, CellWindow area, Scene s, JobListener listener)
-            throws InterruptedException {
-        GridGeometry geometry = dem.geometry().window(area.col(), area.row(), area.width(), area.height());
-        Renderer renderer = new Renderer(execution);
-        ReliefResult result;
-        if (product == Product.TINT) {
-            RenderedImage image = renderer.render(dem, s, area, listener);
-            result = ReliefResult.rgba(this, source, geometry, image.argb(), null);
-        } else {
-            Sun.Lighting lighting = sun.over(dem.geometry(), body, execution.tileSize());
-            if (lighting.sun() != null) {
-                listener.sun(lighting.sun());
-            }
-            result = switch (product) {
-                case RELIEF -> ReliefResult.rgba(this, source, geometry, renderer.render(dem,
-                        s.withLight(lighting.field()).withFade(lighting.fade()), area, listener).argb(),
-                        lighting.sun());
-                case HILLSHADE -> ReliefResult.gray(this, source, geometry, renderer.hillshadeGray(dem,
-                        s.hillshade(), s.hillshadeOptions(), lighting.field(), area, listener), lighting.sun());
-                case SHADOWS -> ReliefResult.gray(this, source, geometry, maskBytes(renderer.shadows(dem,
-                        s.withLight(lighting.field()), area, listener)), lighting.sun());
-                case TINT -> throw new AssertionError();
-            };
-        }
-        listener.phaseDone(product == Product.RELIEF ? "render" : product.name().toLowerCase(Locale.ROOT));
-        return result;
+        Scene s = productScene();
+        CellWindow whole = CellWindow.whole(dem.width(), dem.height());
+        Sun.Lighting lighting = lighting(dem.geometry(), listener);
+        AreaRenderer renderer = new AreaRenderer(product, s, lighting, execution);
+        return result(null, dem.geometry(), renderer.render(dem, whole, 0, 0, listener), lighting, listener);
     }
 
     /**
      * Runs the job and writes the product to {@code file} ({@link ReliefResult#write}); an output that would
-     * replace or delete a file of the input is refused before anything is read ({@link InputProtection}).
+     * replace or delete a file of the input is refused before anything is read ({@link InputProtection}). A
+     * picture whose grid, layers and pixels need more than the {@linkplain #memoryBudget() memory budget}, or more
+     * than one Java array holds, is rendered in tiles, each read with the halo its stages need, and written band
+     * of rows by band of rows; the file is the same, byte for byte (docs/scale.md). Nothing is written under
+     * {@code file} unless the whole picture is.
      *
      * @param file     the image file (its extension chooses the format)
      * @param options  how to write it
      * @param listener told of progress, notices, the sun used and the end of each phase
      * @return the files written
-     * @throws IOException          when the input cannot be read or the output cannot be written
-     * @throws InterruptedException when the calling thread is interrupted
+     * @throws IOException               when the input cannot be read or the output cannot be written
+     * @throws InsufficientHeapException when not even one tile and its halo fit in the memory budget
+     * @throws InterruptedException      when the calling thread is interrupted
      */
     public WriteResult runAndWrite(Path file, WriteOptions options, JobListener listener)
             throws IOException, InterruptedException {
+        Objects.requireNonNull(file, "file");
+        Objects.requireNonNull(options, "options");
         requireDrawable();
         checkOutput(file, options);
-        ReliefResult result = run(listener);
-        WriteResult written = result.write(file, options);
+        WriteOptions o = product == Product.HILLSHADE && options.noData() == null ? options.withNoData(0) : options;
+        return runAndWrite((picture, rgba) -> {
+            GeoReference geo = GeoReference.of(picture);
+            return rgba ? ImageOutput.openRgba(file, picture.width(), picture.height(), geo, o)
+                    : ImageOutput.openGray(file, picture.width(), picture.height(), geo, o);
+        }, result -> result.write(file, options), listener);
+    }
+
+    /** Opens the image a picture of {@code picture}'s size and place is written to. */
+    @FunctionalInterface
+    interface SinkOpener {
+        ImageSink open(GridGeometry picture, boolean rgba) throws IOException;
+    }
+
+    /** Writes a picture rendered in memory at once. */
+    @FunctionalInterface
+    interface ResultWriter {
+        WriteResult write(ReliefResult result) throws IOException;
+    }
+
+    /**
+     * {@link #runAndWrite(Path, WriteOptions, JobListener)} into any image: a picture that fits the budget is
+     * rendered in memory and handed to {@code whole}, a larger one is rendered in tiles into {@code sink}.
+     */
+    WriteResult runAndWrite(SinkOpener sink, ResultWriter whole, JobListener listener)
+            throws IOException, InterruptedException {
+        return runAndWrite(sink, whole, listener, TileLayout::choose);
+    }
+
+    /** Chooses how a picture is cut into tiles: {@link TileLayout#choose}, or smaller tiles for tests. */
+    @FunctionalInterface
+    interface LayoutChooser {
+        /** As {@link TileLayout#choose}. */
+        TileLayout choose(PicturePlan plan, int[] halo, int unit, JobMemory needs, long budget);
+    }
+
+    /** {@link #runAndWrite(SinkOpener, ResultWriter, JobListener)} with the tiles {@code layouts} chooses. */
+    WriteResult runAndWrite(SinkOpener sink, ResultWriter whole, JobListener listener, LayoutChooser layouts)
+            throws IOException, InterruptedException {
+        Objects.requireNonNull(listener, "listener");
+        requireDrawable();
+        Scene s = productScene();
+        WriteResult written;
+        try (InputFile in = InputFile.open(input)) {
+            Planned planned = plan(in.input(), s);
+            if (fitsInMemory(planned.plan(), s)) {
+                written = whole.write(renderInMemory(in.input(), planned, s, listener));
+            } else {
+                written = renderInTiles(in.input(), planned, s, sink, listener, layouts);
+            }
+        }
         written.notices().forEach(listener::notice);
         listener.phaseDone("write");
         return written;
+    }
+
+    /** The plan of the picture and the file's statistics, streamed at most once, when asked for. */
+    private record Planned(PicturePlan plan, DemLoader.StreamedStatistics statistics) {
+    }
+
+    /** Plans the read: the window with the halo the scene's stages need, from the file's header. */
+    private Planned plan(DemInput files, Scene s) throws IOException {
+        DemLoader.Halo halo = s.hillshade() == null ? DemLoader.Halo.NONE : DemLoader.Halo.uniform(1);
+        if (s.hasShadows()) {
+            halo = halo.union(shadowHalo(s));
+        }
+        DemInfo info = DemReader.inspect(files).withDefaultEllipsoid(body.ellipsoid());
+        DemLoader.StreamedStatistics statistics = new DemLoader.StreamedStatistics(files);
+        return new Planned(DemLoader.plan(info, body.ellipsoid(), window, size, halo, statistics), statistics);
+    }
+
+    /** True when the picture's grid, layers and pixels fit the memory budget and each fits in one Java array. */
+    private boolean fitsInMemory(PicturePlan plan, Scene s) {
+        long read = plan.resampled() ? (long) plan.decimatedWidth() * plan.decimatedHeight() : 0;
+        return plan.fitsOneArray() && read <= PicturePlan.MAX_ARRAY && inMemoryBytes(plan, s) <= memoryBudget();
+    }
+
+    /** The heap the picture takes rendered at once: its grid (and the read it is resampled from), layers, pixels. */
+    private long inMemoryBytes(PicturePlan plan, Scene s) {
+        long read = plan.resampled() ? (long) plan.decimatedWidth() * plan.decimatedHeight() : 0;
+        return JobMemory.of(product, s).render(JobMemory.gridBytes(plan.gridCells(), read), plan.pixels());
+    }
+
+    /** Whether the scene needs the whole file's statistics: a tint's range, the cast shadows' lowest terrain. */
+    private static boolean needsStatistics(Scene s) {
+        return s.tint() != null || s.hasShadows();
+    }
+
+    /** Loads the picture's grid with its halo and renders it. */
+    private ReliefResult renderInMemory(DemInput files, Planned planned, Scene s, JobListener listener)
+            throws IOException, InterruptedException {
+        DemLoader.Loaded loaded = DemLoader.load(files, planned.plan(), needsStatistics(s), planned.statistics());
+        listener.phaseDone("read");
+        for (String notice : loaded.info().notices()) {
+            listener.notice(notice);
+        }
+        ScaleNotice.of(loaded.info().geometry()).ifPresent(listener::notice);
+        Scene scene = forWholeFile(s, loaded.fileStatistics());
+        CellWindow area = loaded.area();
+        Sun.Lighting lighting = lighting(planned.plan().pictureGeometry(), listener);
+        AreaRenderer renderer = new AreaRenderer(product, scene, lighting, execution);
+        AreaRenderer.Pixels pixels = renderer.render(loaded.dem(), area, area.col(), area.row(), listener);
+        GridGeometry geometry = loaded.dem().geometry().window(area.col(), area.row(), area.width(),
+                area.height());
+        return result(loaded.info(), geometry, pixels, lighting, listener);
+    }
+
+    /** Renders the picture tile by tile into the sink {@code opener} opens, and commits it. */
+    private WriteResult renderInTiles(DemInput files, Planned planned, Scene s, SinkOpener opener,
+                                      JobListener listener, LayoutChooser layouts)
+            throws IOException, InterruptedException {
+        PicturePlan plan = planned.plan();
+        ElevationStatistics statistics = needsStatistics(s) ? planned.statistics().get() : null;
+        listener.phaseDone("read");
+        List<String> notices = new ArrayList<>(plan.info().notices());
+        ScaleNotice.of(plan.info().geometry()).ifPresent(notices::add);
+        Scene scene = forWholeFile(s, statistics);
+        GridGeometry picture = plan.pictureGeometry();
+        Sun.Lighting lighting = lighting(picture, listener);
+        int[] halo = TileHalo.of(plan, scene, statistics, lighting);
+        int unit = sun.perTile() ? execution.tileSize() : RenderSettings.MIN_TILE_SIZE;
+        AreaRenderer renderer = new AreaRenderer(product, scene, lighting, execution);
+        TiledWriter tiles = TiledWriter.plan(files, plan, renderer, halo, unit, JobMemory.of(product, s),
+                memoryBudget(), layouts, scene.hasShadows());
+        notices.add(tiles.notice(inMemoryBytes(plan, s), memoryBudget()));
+        String stage = stageName();
+        try (ImageSink sink = opener.open(picture, renderer.rgba())) {
+            tiles.write(sink, stage, listener, notices);
+            listener.phaseDone(stage);
+            return sink.commit();
+        }
+    }
+
+    /** The result of a picture rendered in memory; tells the listener the product's phase ended. */
+    private ReliefResult result(DemInfo source, GridGeometry geometry, AreaRenderer.Pixels pixels,
+                                Sun.Lighting lighting, JobListener listener) {
+        listener.phaseDone(stageName());
+        SunPosition position = lighting == null ? null : lighting.sun();
+        return pixels.argb() != null ? ReliefResult.rgba(this, source, geometry, pixels.argb(), position)
+                : ReliefResult.gray(this, source, geometry, pixels.gray(), position);
+    }
+
+    /** The light over the picture (null for a tint, which is not lit); the listener hears the sun by time. */
+    private Sun.Lighting lighting(GridGeometry picture, JobListener listener) {
+        if (product == Product.TINT) {
+            return null;
+        }
+        Sun.Lighting lighting = sun.over(picture, body, execution.tileSize());
+        if (lighting.sun() != null) {
+            listener.sun(lighting.sun());
+        }
+        return lighting;
+    }
+
+    /** The product's phase name: "render", "hillshade", "tint" or "shadows". */
+    private String stageName() {
+        return product == Product.RELIEF ? "render" : product.name().toLowerCase(Locale.ROOT);
     }
 
     /**
@@ -317,30 +498,6 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         };
     }
 
-    /** Reads the window with the halo the scene's stages need, and the file's range when a stage needs it. */
-    private DemLoader.Loaded load(Scene s) throws IOException {
-        DemLoader.Halo halo = s.hillshade() == null ? DemLoader.Halo.NONE : DemLoader.Halo.uniform(1);
-        if (s.hasShadows()) {
-            halo = halo.union(shadowHalo(s));
-        }
-        // a percent tint spans the whole file's range; a windowed sweep needs the file's lowest elevation
-        boolean fileStatistics = s.tint() != null || s.hasShadows() && window != null;
-        if (input != null) {
-            return DemLoader.load(input, window, size, halo, fileStatistics, body.ellipsoid(), bytesPerPixel(s));
-        }
-        return DemLoader.loadSample(window, size, halo, fileStatistics, body.ellipsoid(), bytesPerPixel(s));
-    }
-
-    /** What the product holds per output pixel besides the grid (for the heap check before the read). */
-    private int bytesPerPixel(Scene s) {
-        return switch (product) {
-            case RELIEF -> Integer.BYTES + (s.hasShadows() ? Float.BYTES : 0);
-            case HILLSHADE -> Byte.BYTES;
-            case TINT -> Integer.BYTES;
-            case SHADOWS -> Float.BYTES + Byte.BYTES;
-        };
-    }
-
     /**
      * The cast-shadow halo. With a sun by date and time the direction is not known before the grid is placed, so
      * it is computed from the file's header for the sun of the whole file; the light used for rendering is
@@ -354,21 +511,15 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     }
 
     /**
-     * The shadow options for a grid loaded as a window of its file: with the file's lowest elevation, so that the
-     * sweep's mask equals the same window of the whole file's ({@link ShadowOptions#terrainMinimum()}); unchanged
-     * when the file's statistics were not streamed (no window).
+     * The scene for a grid read from a file: a percent tint spans the whole file's range, and the sweep is given
+     * the file's lowest elevation, so that a window, a tile or a reduced copy of the file gets the same floor as
+     * the whole file ({@link ShadowOptions#terrainMinimum()}); unchanged when the statistics were not needed.
      */
-    private static ShadowOptions forLoadedGrid(ShadowOptions options, DemLoader.Loaded loaded) {
-        return loaded.fileStatistics() == null ? options
-                : options.withTerrainMinimum(loaded.fileStatistics().min());
-    }
-
-    /** The shadowed fraction as 0..255. */
-    private static byte[] maskBytes(float[] mask) {
-        byte[] bytes = new byte[mask.length];
-        for (int i = 0; i < mask.length; i++) {
-            bytes[i] = (byte) Math.round(Clamp.between(mask[i], 0f, 1f) * 255f);
+    private static Scene forWholeFile(Scene s, ElevationStatistics file) {
+        if (file == null) {
+            return s;
         }
-        return bytes;
+        Scene scene = s.withTintRange(file);
+        return s.hasShadows() ? scene.withShadowOptions(s.shadowOptions().withTerrainMinimum(file.min())) : scene;
     }
 }

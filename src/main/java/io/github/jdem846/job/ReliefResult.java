@@ -23,7 +23,7 @@ import java.util.Objects;
  *                 by this record: do not modify
  * @param gray     0..255 samples (hillshade: 0 = no-data); {@code null} for an RGBA product. Owned by this
  *                 record: do not modify
- * @param sun      the sun by date and time at the centre of the cells read, or {@code null} for a fixed light
+ * @param sun      the sun by date and time at the centre of the picture, or {@code null} for a fixed light
  */
 public record ReliefResult(ReliefJob job, DemInfo source, GridGeometry geometry, int[] argb, byte[] gray,
                            SunPosition sun) {

@@ -108,9 +108,20 @@ public record Sun(LightDirection direction, ZonedDateTime time, LatLon place, bo
      * @param sun   the sun by date and time at the grid's centre, or {@code null} for a fixed light
      */
     record Lighting(LightField field, double fade, io.github.jdem846.sun.SunPosition sun) {
+
+        /**
+         * The same light over a grid in which the picture it was computed for starts at column {@code col}, row
+         * {@code row} (a grid read with a halo, or a tile's piece of the picture and its halo).
+         */
+        Lighting inGrid(int col, int row) {
+            return col == 0 && row == 0 ? this : new Lighting(new ShiftedLightField(field, col, row), fade, sun);
+        }
     }
 
-    /** The light over {@code grid}, with tiles of {@code tileSize} cells for a sun per tile. */
+    /**
+     * The light over {@code grid} (the picture: the sun by date and time is computed for its cells, whatever grid
+     * is read around it), with tiles of {@code tileSize} cells from its north-west corner for a sun per tile.
+     */
     Lighting over(GridGeometry grid, io.github.jdem846.sun.Body body, int tileSize) {
         if (time == null) {
             return new Lighting(LightField.uniform(direction), 0, null);

@@ -23,6 +23,92 @@ public final class DemResampler {
      * @throws IllegalArgumentException unless the size is at least 1×1 and at most {@link #MAX_CELLS} cells
      */
     public static Dem resample(Dem dem, int width, int height) {
+        requireSize(width, height);
+        if (width == dem.width() && height == dem.height()) {
+            return dem;
+        }
+        float[] values = resampleRegion(dem, 0, 0, dem.width(), dem.height(), width, height, 0, 0, width, height);
+        return new Dem(values, resampledGeometry(dem.geometry(), width, height), dem.declaredNoData());
+    }
+
+    /**
+     * The geometry of {@code g} resampled to {@code width × height} cells over the same extent (that of {@link
+     * #resample}, computed the same way).
+     *
+     * @param g      the grid before resampling
+     * @param width  columns after, ≥ 1
+     * @param height rows after, ≥ 1
+     * @return the new grid's geometry, a root grid of its own
+     */
+    public static GridGeometry resampledGeometry(GridGeometry g, int width, int height) {
+        double sx = (double) g.width() / width;
+        double sy = (double) g.height() / height;
+        return new GridGeometry(width, height, g.originX(), g.originY(), g.cellWidth() * sx, g.cellHeight() * sy,
+                g.crs(), g.declaredAnchor());
+    }
+
+    /**
+     * The cells {@code [col, col + w) × [row, row + h)} of a {@code fullWidth × fullHeight} grid resampled to
+     * {@code width × height}, from a part of that grid only: {@code part} holds its cells from column {@code
+     * partCol}, row {@code partRow} on. The values are those of the same cells of {@link #resample} of the whole
+     * grid, bit for bit, when {@code part} covers what they read ({@link #sourceSpan}); this is how a picture too
+     * large for memory is resampled piece by piece.
+     *
+     * @param part       cells of the full grid
+     * @param partCol    the full grid's column of {@code part}'s first
+     * @param partRow    the full grid's row of {@code part}'s first
+     * @param fullWidth  columns of the full grid
+     * @param fullHeight rows of the full grid
+     * @param width      columns of the resampled grid
+     * @param height     rows of the resampled grid
+     * @param col        first column of the resampled grid wanted
+     * @param row        first row wanted
+     * @param w          columns wanted
+     * @param h          rows wanted
+     * @return the cells wanted, row-major
+     * @throws IllegalArgumentException when the sizes are not positive or the cells are outside the resampled grid
+     */
+    public static float[] resampleRegion(Dem part, int partCol, int partRow, int fullWidth, int fullHeight,
+                                         int width, int height, int col, int row, int w, int h) {
+        requireSize(width, height);
+        int c0 = col;
+        int r0 = row;
+        if (c0 < 0 || r0 < 0 || w < 1 || h < 1 || (long) c0 + w > width || (long) r0 + h > height) {
+            throw new IllegalArgumentException("region " + w + "×" + h + " at (" + c0 + ", " + r0
+                    + ") is not inside the " + width + "×" + height + " output");
+        }
+        Source src = new Source(part, partCol, partRow, fullWidth, fullHeight);
+        double sx = (double) fullWidth / width;
+        double sy = (double) fullHeight / height;
+        float[] values = new float[w * h];
+        for (int r = r0; r < r0 + h; r++) {
+            for (int c = c0; c < c0 + w; c++) {
+                values[(r - r0) * w + c - c0] = (sx >= 1 && sy >= 1) ? boxMean(src, c, r, sx, sy)
+                        : sample(src, (c + 0.5) * sx - 0.5, (r + 0.5) * sy - 0.5, sx, sy, c, r);
+            }
+        }
+        return values;
+    }
+
+    /**
+     * The cells of the full grid that output cells {@code [first, first + count)} of one axis read, as
+     * {start, end}: {@code full} cells resampled to {@code out}, clipped to the grid (with a cell's margin for
+     * the bilinear neighbours and rounding).
+     *
+     * @param full  cells of the full grid along the axis
+     * @param out   cells of the resampled grid along the axis
+     * @param first first output cell
+     * @param count output cells
+     * @return {start, end} (end exclusive) in the full grid
+     */
+    public static int[] sourceSpan(int full, int out, int first, int count) {
+        double s = (double) full / out;
+        long a = (long) Math.floor(first * s) - 2;
+        long b = (long) Math.ceil((first + (long) count) * s) + 2;
+        return new int[] {(int) Math.max(0, a), (int) Math.min(full, b)};
+    }
+
+    private static void requireSize(int width, int height) {
         if (width < 1 || height < 1) {
             throw new IllegalArgumentException("output size must be at least 1×1, got " + width + "×" + height);
         }
@@ -30,26 +116,17 @@ public final class DemResampler {
             throw new IllegalArgumentException("a grid of " + width + "×" + height + " = " + (long) width * height
                     + " cells is more than one Java array can hold (at most " + MAX_CELLS + ")");
         }
-        if (width == dem.width() && height == dem.height()) {
-            return dem;
+    }
+
+    /** The full grid read through a part of it: cell (c, r) of the full grid is ({@code c − col}, {@code r − row}). */
+    private record Source(Dem part, int col, int row, int width, int height) {
+        float get(int c, int r) {
+            return part.get(c - col, r - row);
         }
-        GridGeometry g = dem.geometry();
-        double sx = (double) dem.width() / width;
-        double sy = (double) dem.height() / height;
-        GridGeometry out = new GridGeometry(width, height, g.originX(), g.originY(), g.cellWidth() * sx,
-                g.cellHeight() * sy, g.crs(), g.declaredAnchor());
-        float[] values = new float[width * height];
-        for (int r = 0; r < height; r++) {
-            for (int c = 0; c < width; c++) {
-                values[r * width + c] = (sx >= 1 && sy >= 1) ? boxMean(dem, c, r, sx, sy)
-                        : sample(dem, (c + 0.5) * sx - 0.5, (r + 0.5) * sy - 0.5, sx, sy, c, r);
-            }
-        }
-        return new Dem(values, out, dem.declaredNoData());
     }
 
     /** Mixed or enlarging scales: box mean along an axis that shrinks, bilinear along one that grows. */
-    private static float sample(Dem dem, double x, double y, double sx, double sy, int c, int r) {
+    private static float sample(Source dem, double x, double y, double sx, double sy, int c, int r) {
         if (sx >= 1 || sy >= 1) {
             // one axis shrinks: average along it, interpolate along the other by splitting into a bilinear mean
             double sum = 0;
@@ -76,7 +153,7 @@ public final class DemResampler {
     }
 
     /** Bilinear value at fractional cell-centre coordinates, edges clamped, no-data corners renormalised. */
-    static float bilinear(Dem dem, double x, double y) {
+    private static float bilinear(Source dem, double x, double y) {
         int w = dem.width();
         int h = dem.height();
         x = Math.max(0, Math.min(w - 1, x));
@@ -109,7 +186,7 @@ public final class DemResampler {
         return (float) (sum / wsum);
     }
 
-    private static float boxMean(Dem dem, int c, int r, double sx, double sy) {
+    private static float boxMean(Source dem, int c, int r, double sx, double sy) {
         double x0 = c * sx;
         double x1 = Math.min(dem.width(), (c + 1) * sx);
         double y0 = r * sy;

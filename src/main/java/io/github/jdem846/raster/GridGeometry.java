@@ -38,6 +38,9 @@ public final class GridGeometry {
     private final Placement placement;
     /** True: metric sizes are lengths on the ground of a Web Mercator grid ({@link #withGroundCellSizes()}). */
     private final boolean groundSizes;
+    /** The origin of the root grid ({@link #placement}): cell centres are computed from it, see {@link #centerY}. */
+    private final double rootOriginX;
+    private final double rootOriginY;
     private volatile Optional<GeoLocator> locator; // derived from crs, built on first use
 
     /**
@@ -53,16 +56,17 @@ public final class GridGeometry {
     public GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
                         CrsInfo crs, PixelAnchor declaredAnchor) {
         this(width, height, originX, originY, cellWidth, cellHeight, crs, declaredAnchor,
-                new Placement(0, 0, Math.max(width, 1), Math.max(height, 1)), false);
+                new Placement(0, 0, Math.max(width, 1), Math.max(height, 1)), false, originX, originY);
     }
 
     private GridGeometry(GridGeometry g, int width, int height, double originX, double originY, Placement placement) {
         this(width, height, originX, originY, g.cellWidth, g.cellHeight, g.crs, g.declaredAnchor, placement,
-                g.groundSizes);
+                g.groundSizes, g.rootOriginX, g.rootOriginY);
     }
 
     private GridGeometry(int width, int height, double originX, double originY, double cellWidth, double cellHeight,
-                         CrsInfo crs, PixelAnchor declaredAnchor, Placement placement, boolean groundSizes) {
+                         CrsInfo crs, PixelAnchor declaredAnchor, Placement placement, boolean groundSizes,
+                         double rootOriginX, double rootOriginY) {
         if (width < 1 || height < 1) {
             throw new IllegalArgumentException("grid size must be at least 1×1, got " + width + "×" + height);
         }
@@ -83,6 +87,8 @@ public final class GridGeometry {
         this.declaredAnchor = Objects.requireNonNull(declaredAnchor, "declaredAnchor");
         this.placement = placement;
         this.groundSizes = groundSizes;
+        this.rootOriginX = rootOriginX;
+        this.rootOriginY = rootOriginY;
     }
 
     /**
@@ -147,14 +153,21 @@ public final class GridGeometry {
         return declaredAnchor;
     }
 
-    /** World x of the centre of column {@code col} (fractional columns allowed). */
+    /**
+     * World x of the centre of column {@code col} (fractional columns allowed), computed from the root grid's
+     * origin ({@link #placement}), so that a window gives its cells exactly the root's values, bit for bit.
+     */
     public double centerX(double col) {
-        return originX + (col + 0.5) * cellWidth;
+        return rootOriginX + (placement.col() + col + 0.5) * cellWidth;
     }
 
-    /** World y of the centre of row {@code row} (fractional rows allowed). */
+    /**
+     * World y of the centre of row {@code row} (fractional rows allowed), computed from the root grid's origin as
+     * {@link #centerX} is: the per-row metric sizes of a window of a latitude/longitude grid, and what is computed
+     * from them, are those of the same rows of the root.
+     */
     public double centerY(double row) {
-        return originY - (row + 0.5) * cellHeight;
+        return rootOriginY - (placement.row() + row + 0.5) * cellHeight;
     }
 
     /** @return world x of the east edge */
@@ -191,16 +204,21 @@ public final class GridGeometry {
                 if (!groundSizes) {
                     yield cellHeight * crs.linearUnitMeters();
                 }
-                double north = originY - row * cellHeight;
+                double north = northEdge(row);
                 yield crs.ellipsoidOrWgs84().meridianArcLength(WebMercator.latitude(north),
                         WebMercator.latitude(north - cellHeight));
             }
             case GEOGRAPHIC -> {
-                double north = originY - row * cellHeight;
+                double north = northEdge(row);
                 yield crs.ellipsoidOrWgs84().meridianArcLength(north, north - cellHeight);
             }
             case UNKNOWN -> cellHeight;
         };
+    }
+
+    /** World y of the north edge of row {@code row}, from the root grid's origin as {@link #centerY} is. */
+    private double northEdge(int row) {
+        return rootOriginY - ((long) placement.row() + row) * cellHeight;
     }
 
     /** @return the ellipsoid used for metric sizes (the CRS's, or WGS 84) */
@@ -285,7 +303,7 @@ public final class GridGeometry {
         int w = Math.max(1, (width + factorX - 1) / factorX);
         int h = Math.max(1, (height + factorY - 1) / factorY);
         return new GridGeometry(w, h, originX, originY, cellWidth * factorX, cellHeight * factorY, crs,
-                declaredAnchor, new Placement(0, 0, w, h), groundSizes);
+                declaredAnchor, new Placement(0, 0, w, h), groundSizes, originX, originY);
     }
 
     /**
@@ -309,7 +327,7 @@ public final class GridGeometry {
     public GridGeometry withCrs(CrsInfo newCrs) {
         return new GridGeometry(width, height, originX, originY, cellWidth, cellHeight,
                 Objects.requireNonNull(newCrs, "crs"), declaredAnchor, placement,
-                groundSizes && WebMercator.isWebMercator(newCrs));
+                groundSizes && WebMercator.isWebMercator(newCrs), rootOriginX, rootOriginY);
     }
 
     /**
@@ -328,7 +346,7 @@ public final class GridGeometry {
                     + "not for " + (crs.name() != null ? crs.name() : crs.kind().toString()));
         }
         return new GridGeometry(width, height, originX, originY, cellWidth, cellHeight, crs, declaredAnchor,
-                placement, true);
+                placement, true, rootOriginX, rootOriginY);
     }
 
     /** @return true when metric cell sizes are measured on the ground ({@link #withGroundCellSizes()}) */

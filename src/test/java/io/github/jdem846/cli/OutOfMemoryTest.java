@@ -45,13 +45,16 @@ class OutOfMemoryTest {
     }
 
     /**
-     * A real render in a JVM whose heap holds the grid but not the grid and the picture: no stack trace, exit 1,
-     * nothing written. (Whether the read's own heap check or the render runs out first depends on the JVM's
-     * accounting; both must end the same way.)
+     * A real render in a JVM whose heap holds the grid but not the grid, the shadow layer and the picture, with a
+     * memory budget as large as the heap ({@code --memory 64m}), so that the picture is rendered in memory (at the
+     * default budget, half the heap, it would be rendered in tiles and succeed): 2360² × 12 bytes = 63.7 MiB of
+     * arrays, more than a 64 MiB heap holds with anything else in it. No stack trace, exit 1, nothing written.
+     * (Whether the read's own heap check or the render runs out first depends on the JVM's accounting; both must
+     * end the same way.)
      */
     @Test
     void aRenderTooLargeForTheHeapEndsCleanly() throws IOException, InterruptedException {
-        int n = 3000;                                       // 36 MB of float32 in a 64 MB heap
+        int n = 2360;                                       // 22 MB of float32 in a 64 MB heap
         Path flt = tmp.resolve("big.flt");
         byte[] cells = new byte[n * n * 4];
         for (int i = 0; i < n * n; i++) {
@@ -67,7 +70,8 @@ class OutOfMemoryTest {
         Path png = tmp.resolve("big.png");
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         Process p = new ProcessBuilder(List.of(java, "-Xmx64m", "-cp", TestJvm.classPath(),
-                Main.class.getName(), "render", flt.toString(), "-q", "--shadows", "sweep", "-o", png.toString()))
+                Main.class.getName(), "render", flt.toString(), "-q", "--shadows", "sweep", "--memory", "64m", "-o",
+                png.toString()))
                 .redirectErrorStream(true).start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
         assertTrue(p.waitFor(120, TimeUnit.SECONDS), "finished");

@@ -1,19 +1,16 @@
 package io.github.jdem846.cli;
 
-import io.github.jdem846.testing.TestJvm;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.Raster;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
@@ -27,7 +24,8 @@ import org.junit.jupiter.params.provider.MethodSource;
  * Bad usage exits with status 2 and says so in one line naming the option, the value and what is allowed, plus at
  * most a hint line to --help; never the usage text, never an exception's name, and no output file. Values that can
  * only be judged against the grid (a window outside it, a size too large or too small for it) too, once its header
- * is read and before any cell is. A picture that is allowed but too large for the heap is refused at once (exit 1).
+ * is read and before any cell is. A picture too large for memory is rendered in tiles; one whose smallest tile cannot
+ * fit is refused at once (exit 1).
  */
 class UsageErrorTest {
 
@@ -75,6 +73,10 @@ class UsageErrorTest {
                 bad("render", "--tile-size 0", "--tile-size", "got 0", "16 to 4096"),
                 bad("hillshade", "--tile-size -5", "--tile-size", "got -5", "16 to 4096"),
                 bad("render", "--tile-size 2000000000", "--tile-size", "got 2000000000", "16 to 4096"),
+                bad("render", "--memory 0", "--memory", "'0'", "512m or 4g", "above 0"),
+                bad("hillshade", "--memory lots", "--memory", "'lots'", "512m or 4g"),
+                bad("shadows", "--memory -5m", "--memory", "'-5m'", "above 0"),
+                bad("tint", "--memory 9999999999t", "--memory", "'9999999999t'", "below 8 EiB"),
                 // hillshade knobs
                 bad("render", "--z-factor 1e308", "--z-factor", "got 1.0E308", "> 0 and ≤ 1000000"),
                 bad("render", "--z-factor NaN", "--z-factor", "got NaN", "> 0 and ≤ 1000000"),
@@ -224,24 +226,21 @@ class UsageErrorTest {
     }
 
     /**
-     * A size within the limits but too large for the heap is refused at once, before the grid is resampled, with
-     * one line giving what it needs and what to do (exit 1: the command is right, the machine too small). In a
-     * JVM of 64 MB the 6000-pixel-wide render of the test DEM needs at least 6000 × 3223 × 8 bytes.
+     * A picture larger than the memory budget is rendered in tiles; one whose smallest tile, with the halo its cast
+     * shadows need toward a sun 2° high, cannot fit the budget is refused at once, before any cell is read, with
+     * one line giving what it needs and what to do (exit 1: the command is right, the machine or budget too small).
      */
     @Test
-    @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
-    void aPictureTooLargeForTheHeapIsRefusedBeforeItIsMade() throws IOException, InterruptedException {
-        Path png = dir.resolve("large.png");
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Process p = new ProcessBuilder(List.of(java, "-Xmx64m", "-cp", TestJvm.classPath(),
-                Main.class.getName(), "render", BT, "-q", "--width", "6000", "-o", png.toString()))
-                .redirectErrorStream(true).start();
-        String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
-        assertTrue(p.waitFor(50, TimeUnit.SECONDS), "finished");
-        assertEquals(1, p.exitValue(), output);
+    void aPictureWhoseSmallestTileCannotFitIsRefusedBeforeItIsMade() {
+        Path png = dir.resolve("low.png");
+        CliRun run = CliRun.of("render", BT, "-q", "--shadows", "sweep", "--sun-elevation", "2", "--memory", "256k",
+                "-o", png.toString());
+        String output = run.err().strip();
+        assertEquals(1, run.exitCode(), output);
         assertEquals(1, output.lines().count(), output);
-        assertTrue(output.startsWith("jdem846: a picture of 6000×3223 pixels needs at least 148 MiB")
-                && output.contains("at most") && output.contains("-Xmx"), output);
+        assertTrue(output.startsWith("jdem846: even the smallest tile, 16×16 pixels, with the halo read around it")
+                && output.contains("more than the memory budget of 256 KiB") && output.contains("--memory"),
+                output);
         assertFalse(output.contains("Exception") || output.contains("out of memory"), "refused up front: " + output);
         assertFalse(Files.exists(png), "no picture written");
     }

@@ -20,4 +20,13 @@ class InsufficientHeapExceptionTest {
         assertThrows(InsufficientHeapException.class,
                 () -> InsufficientHeapException.requireFits(1000 * 1001, 1000, 1000, 4, 8_000_000));
     }
+
+    @Test
+    void aPictureOfMoreCellsThanOneArrayIsRefusedInMemoryWhateverTheHeap() {
+        InsufficientHeapException e = assertThrows(InsufficientHeapException.class,
+                () -> InsufficientHeapException.requireFits(46_341L * 46_341, 46_341, 46_341, 1, Long.MAX_VALUE));
+        assertTrue(e.getMessage().startsWith("a picture of 46341×46341 pixels from 2147488281 cells has more than"
+                + " one Java array holds") && e.getMessage().endsWith("written to a file, it is rendered in tiles"),
+                e.getMessage());
+    }
 }

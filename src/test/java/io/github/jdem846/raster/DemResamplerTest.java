@@ -79,4 +79,42 @@ class DemResamplerTest {
         }
         return s / d.backingArray().length;
     }
+
+    /**
+     * A region of a resampled grid, computed from only the part of the full grid that {@code sourceSpan} says it
+     * reads, is the same cells of the whole resample, bit for bit: shrinking, enlarging and mixed scales, with
+     * no-data, regions at the edges and inside.
+     */
+    @Test
+    void aRegionFromAPartEqualsTheSameCellsOfTheWholeResample() {
+        Dem full = SyntheticDems.rough(97, 61, 30, 7, 400);
+        float[] v = full.backingArray().clone();
+        for (int i = 0; i < v.length; i += 13) {
+            v[i] = Float.NaN;
+        }
+        full = new Dem(v, full.geometry());
+        int[][] sizes = {{40, 25}, {31, 61}, {250, 150}, {60, 140}, {97, 30}};
+        java.util.Random rnd = new java.util.Random(3);
+        for (int[] size : sizes) {
+            Dem whole = DemResampler.resample(full, size[0], size[1]);
+            for (int t = 0; t < 12; t++) {
+                int w = 1 + rnd.nextInt(size[0]);
+                int h = 1 + rnd.nextInt(size[1]);
+                int c = rnd.nextInt(size[0] - w + 1);
+                int r = rnd.nextInt(size[1] - h + 1);
+                int[] cols = DemResampler.sourceSpan(97, size[0], c, w);
+                int[] rows = DemResampler.sourceSpan(61, size[1], r, h);
+                Dem part = full.crop(cols[0], rows[0], cols[1] - cols[0], rows[1] - rows[0]);
+                float[] region = DemResampler.resampleRegion(part, cols[0], rows[0], 97, 61, size[0], size[1],
+                        c, r, w, h);
+                for (int y = 0; y < h; y++) {
+                    for (int x = 0; x < w; x++) {
+                        assertEquals(Float.floatToIntBits(whole.get(c + x, r + y)),
+                                Float.floatToIntBits(region[y * w + x]), size[0] + "×" + size[1] + " at "
+                                        + (c + x) + "," + (r + y));
+                    }
+                }
+            }
+        }
+    }
 }

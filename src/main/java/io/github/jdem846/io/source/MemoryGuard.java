@@ -43,7 +43,7 @@ public final class MemoryGuard {
                     + ", more than the read's limit of " + human(limit));
         }
         long max = Runtime.getRuntime().maxMemory();
-        long available = available();
+        long available = cells > MAX_ARRAY ? available() : available(need);
         if (cells > MAX_ARRAY) {
             throw new DemFormatException(file, "a " + width + " × " + height + " grid has " + cells
                     + " cells, more than one Java array can hold (" + MAX_ARRAY + "); it would need "
@@ -70,7 +70,7 @@ public final class MemoryGuard {
             throw new DemFormatException(file, what + ", more than one Java array can hold (" + MAX_ARRAY
                     + " cells); " + advice);
         }
-        long available = available();
+        long available = available((long) cells * Float.BYTES);
         if ((long) cells * Float.BYTES > available) {
             throw new DemFormatException(file, what + ", but the Java heap has " + human(Math.max(0, available))
                     + " free of at most " + human(Runtime.getRuntime().maxMemory()) + "; " + advice);
@@ -94,7 +94,8 @@ public final class MemoryGuard {
     /** True when {@code width × height} float32 cells plus {@code workBytes} fit in the heap now available. */
     public static boolean fits(int width, int height, long workBytes) {
         long cells = (long) width * height;
-        return cells <= MAX_ARRAY && saturatedAdd(cells * Float.BYTES, workBytes) <= available();
+        return cells <= MAX_ARRAY && saturatedAdd(cells * Float.BYTES, workBytes)
+                <= available(saturatedAdd(cells * Float.BYTES, workBytes));
     }
 
     /** {@code a × b} for non-negative factors, {@link Long#MAX_VALUE} when it overflows. */
@@ -108,6 +109,20 @@ public final class MemoryGuard {
     public static long saturatedAdd(long a, long b) {
         long s = a + b;
         return s < 0 ? Long.MAX_VALUE : s;
+    }
+
+    /**
+     * Heap bytes not in use, for an allocation of {@code need} bytes: when less is free now, after a garbage
+     * collection, since the arrays of earlier reads that nothing holds any more (the pieces of a picture rendered
+     * tile by tile) count as allocated until one.
+     */
+    private static long available(long need) {
+        long a = available();
+        if (need > a && need <= Runtime.getRuntime().maxMemory()) {
+            System.gc();
+            a = available();
+        }
+        return a;
     }
 
     /** Heap bytes not in use now (the maximum heap minus what is allocated and not free). */

@@ -1,0 +1,40 @@
+package io.github.jdem846.job;
+
+import io.github.jdem846.render.Scene;
+
+/**
+ * The heap a job's product holds, in bytes per pixel and per grid cell, to decide between rendering in memory and
+ * in tiles and to size the tiles ({@link TileLayout}). What it counts: the grid read (float32 per cell, and the
+ * decimated read a resampled grid is made from), the layers the stages hold per pixel (the shadowed fraction,
+ * the soft shadows' levels) and the picture itself; one band of rows of the picture when rendered in tiles. Not
+ * counted: the readers' and encoders' buffers and the JVM's own, which is why the default budget is half the heap.
+ *
+ * @param perPixel    bytes a stage holds per pixel of the picture (or of a tile), the picture's own included
+ * @param outputBytes bytes of one pixel of the picture handed to the image file (4 RGBA, 1 gray)
+ */
+record JobMemory(int perPixel, int outputBytes) {
+
+    /** The needs of {@code product} drawn with {@code scene} (the product's scene: stages it does not draw off). */
+    static JobMemory of(Product product, Scene scene) {
+        int shadow = !scene.hasShadows() ? 0 : scene.shadowOptions().softShadows() ? 12 : Float.BYTES;
+        return switch (product) {
+            case RELIEF -> new JobMemory(Integer.BYTES + shadow, Integer.BYTES);
+            case TINT -> new JobMemory(Integer.BYTES, Integer.BYTES);
+            case HILLSHADE -> new JobMemory(Byte.BYTES, Byte.BYTES);
+            case SHADOWS -> new JobMemory(Byte.BYTES + shadow, Byte.BYTES);
+        };
+    }
+
+    /**
+     * Bytes of a grid of {@code cells} at the picture's resolution, read through a decimated read of {@code
+     * readCells} cells when it is resampled from one (0 otherwise): both are held while it is made.
+     */
+    static long gridBytes(long cells, long readCells) {
+        return Float.BYTES * (cells + readCells);
+    }
+
+    /** Bytes of rendering {@code pixels} at once from a grid of {@code gridBytes}. */
+    long render(long gridBytes, long pixels) {
+        return gridBytes + pixels * perPixel;
+    }
+}
