@@ -26,7 +26,7 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class StreamingMemoryTest {
 
-    static final int SIZE = 3072;
+    static final int SIZE = 6144;
     static final int BAND = 200;
 
     /** A pixel of the picture: blocks of 64 × 64 (quick to compress) with a no-data corner, never held whole. */
@@ -63,7 +63,7 @@ class StreamingMemoryTest {
         Path png = dir.resolve("big.png");
         Path strips = dir.resolve("big.tif");
         Path cog = dir.resolve("big-cog.tif");
-        long heap = 6L << 20;
+        long heap = 16L << 20;
         Process p = new ProcessBuilder(List.of(TestJvm.java(), "-Xmx" + (heap >> 20) + "m", "-XX:+UseSerialGC",
                 "-Djava.awt.headless=true", "-cp", TestJvm.classPath(), Writer.class.getName(), png.toString(),
                 strips.toString(), cog.toString())).redirectErrorStream(true).start();
