@@ -1,5 +1,6 @@
 package io.github.jdem846.io.mosaic;
 
+import io.github.jdem846.internal.SafeXml;
 import io.github.jdem846.io.DemFormatException;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
@@ -10,15 +11,12 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
-import javax.xml.XMLConstants;
 import javax.xml.parsers.DocumentBuilder;
-import javax.xml.parsers.DocumentBuilderFactory;
 import javax.xml.parsers.ParserConfigurationException;
 import org.w3c.dom.Document;
 import org.w3c.dom.Element;
 import org.w3c.dom.Node;
 import org.w3c.dom.NodeList;
-import org.xml.sax.ErrorHandler;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
 
@@ -303,40 +301,9 @@ final class VrtParser {
 
     private static DocumentBuilder builder() throws IOException {
         try {
-            DocumentBuilderFactory f = DocumentBuilderFactory.newInstance();
-            f.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
-            f.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-            f.setFeature("http://xml.org/sax/features/external-general-entities", false);
-            f.setFeature("http://xml.org/sax/features/external-parameter-entities", false);
-            f.setFeature("http://apache.org/xml/features/nonvalidating/load-external-dtd", false);
-            f.setAttribute(XMLConstants.ACCESS_EXTERNAL_DTD, "");
-            f.setAttribute(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "");
-            f.setXIncludeAware(false);
-            f.setExpandEntityReferences(false);
-            f.setNamespaceAware(false);
-            DocumentBuilder b = f.newDocumentBuilder();
-            b.setErrorHandler(FAIL_SILENTLY);
-            return b;
+            return SafeXml.newBuilder();
         } catch (ParserConfigurationException e) {
             throw new IOException("the XML parser cannot be configured safely: " + e.getMessage(), e);
         }
     }
-
-    /** Fails the parse on errors without printing "[Fatal Error]" on stderr. */
-    private static final ErrorHandler FAIL_SILENTLY = new ErrorHandler() {
-        @Override
-        public void warning(SAXParseException e) {
-            // nothing to report
-        }
-
-        @Override
-        public void error(SAXParseException e) throws SAXException {
-            throw e;
-        }
-
-        @Override
-        public void fatalError(SAXParseException e) throws SAXException {
-            throw e;
-        }
-    };
 }

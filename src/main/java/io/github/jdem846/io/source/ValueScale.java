@@ -1,17 +1,12 @@
 package io.github.jdem846.io.source;
 
+import io.github.jdem846.internal.SafeXml;
 import java.io.StringReader;
 import java.util.List;
 import java.util.Locale;
-import javax.xml.XMLConstants;
-import javax.xml.parsers.DocumentBuilder;
-import javax.xml.parsers.DocumentBuilderFactory;
 import org.w3c.dom.Element;
 import org.w3c.dom.NodeList;
-import org.xml.sax.ErrorHandler;
 import org.xml.sax.InputSource;
-import org.xml.sax.SAXException;
-import org.xml.sax.SAXParseException;
 
 /**
  * A linear unpacking of stored values, elevation = raw × {@code scale} + {@code offset}, as GDAL records it for a
@@ -47,12 +42,7 @@ public record ValueScale(double scale, double offset) {
         double scale = 1;
         double offset = 0;
         try {
-            DocumentBuilderFactory factory = DocumentBuilderFactory.newInstance();
-            factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
-            factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-            DocumentBuilder builder = factory.newDocumentBuilder();
-            builder.setErrorHandler(SILENT); // the default handler prints "[Fatal Error] ..." on stderr
-            NodeList items = builder.parse(new InputSource(new StringReader(xml.strip())))
+            NodeList items = SafeXml.newBuilder().parse(new InputSource(new StringReader(xml.strip())))
                     .getElementsByTagName("Item");
             for (int i = 0; i < items.getLength(); i++) {
                 Element item = (Element) items.item(i);
@@ -88,23 +78,6 @@ public record ValueScale(double scale, double offset) {
         return s;
     }
 
-    /** Fails the parse on errors without printing anything; the caller turns the failure into a notice. */
-    private static final ErrorHandler SILENT = new ErrorHandler() {
-        @Override
-        public void warning(SAXParseException e) {
-            // not worth a notice
-        }
-
-        @Override
-        public void error(SAXParseException e) throws SAXException {
-            throw e;
-        }
-
-        @Override
-        public void fatalError(SAXParseException e) throws SAXException {
-            throw e;
-        }
-    };
 
     private static boolean mentionsScaleOrOffset(String xml) {
         String lower = xml.toLowerCase(Locale.ROOT);
