@@ -8,7 +8,10 @@ package io.github.jdem846.raster;
  * @param validCount number of cells that hold an elevation
  * @param totalCount number of cells
  */
-public record ElevationStatistics(double min, double max, long validCount, long totalCount) {
+public record ElevationStatistics(double min, double max, long validCount, long totalCount)
+        implements java.io.Serializable {
+
+    private static final long serialVersionUID = 1L;
 
     /**
      * Scans cells, skipping NaN.

@@ -13,23 +13,42 @@ import java.io.IOException;
  * averaged again in blocks of a whole number of these cells, instead of reading the whole file once per zoom.
  * (A block of blocks is the mean of its blocks' means: the mean of its cells, except where no-data leaves blocks
  * unequally filled.)
+ *
+ * <p>Read on first use ({@link #lazy}), so that a plan whose groups run elsewhere reads it only where a group of
+ * such a zoom is rendered; safe for use by several threads.
  */
 final class Overview {
 
     /** Most cells of the whole DEM at a zoom's decimation for the zoom to take its cells from an overview. */
     static final long MAX_CELLS = 1L << 22;
 
-    private final Dem grid;
+    private final DemInput input;
     private final int decimation;
+    /** Guarded by this; null until first read. */
+    private Dem grid;
 
-    private Overview(Dem grid, int decimation) {
-        this.grid = grid;
+    private Overview(DemInput input, int decimation) {
+        this.input = input;
         this.decimation = decimation;
     }
 
-    /** Reads the whole of {@code input} in blocks of {@code decimation} cells. */
+    /** The whole of {@code input} in blocks of {@code decimation} cells, read when its cells are first asked for. */
+    static Overview lazy(DemInput input, int decimation) {
+        return new Overview(input, decimation);
+    }
+
+    /** Reads the whole of {@code input} in blocks of {@code decimation} cells now. */
     static Overview read(DemInput input, int decimation) throws IOException {
-        return new Overview(DemReader.load(input, new ReadRequest(null, decimation)).dem(), decimation);
+        Overview o = new Overview(input, decimation);
+        o.grid();
+        return o;
+    }
+
+    private synchronized Dem grid() throws IOException {
+        if (grid == null) {
+            grid = DemReader.load(input, new ReadRequest(null, decimation)).dem();
+        }
+        return grid;
     }
 
     /** @return the size of its blocks in DEM cells */
@@ -46,7 +65,8 @@ final class Overview {
      * The cells of {@code window} (DEM cells, starting on whole blocks of {@code factor} × {@link #decimation()}
      * cells) averaged in blocks of {@code factor × factor} of this overview's cells.
      */
-    Dem cells(Window.Cells window, int factor) {
+    Dem cells(Window.Cells window, int factor) throws IOException {
+        Dem grid = grid();
         int c0 = window.col() / decimation;
         int r0 = window.row() / decimation;
         int c1 = Math.min(grid.width(), (window.col() + window.width() + decimation - 1) / decimation);

@@ -1,6 +1,5 @@
 package io.github.jdem846.tiles;
 
-import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemInput;
 import io.github.jdem846.io.DemReader;
@@ -112,6 +111,30 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
         Objects.requireNonNull(output, "output");
         Objects.requireNonNull(listener, "listener");
         requireTileable();
+        TileFormat format = checkOutput(output);
+        TilePlan plan = TilePlan.prepare(this, listener);
+        try (TileSink sink = TileSink.open(output)) {
+            TileReport report = new PyramidRun(plan, sink, listener).execute(output, format);
+            listener.phaseDone("render");
+            if (report.written() == 0) {
+                throw new IOException("no tile of zoom " + zooms + " holds data of " + input.first()
+                        + ": nothing written");
+            }
+            sink.commit(plan.tileSetInfo());
+            listener.phaseDone("write");
+            return report;
+        }
+    }
+
+    /**
+     * Checks, before any work, that the pyramid can be written to {@code output} ({@link TileSink#open}) and that
+     * it is none of the input files.
+     *
+     * @return the format {@code output} names
+     * @throws IOException              naming the output and what is wrong
+     * @throws IllegalArgumentException for a format that is not written
+     */
+    public TileFormat checkOutput(Path output) throws IOException {
         TileFormat format = TileFormat.of(output);
         if (format == TileFormat.PMTILES) {
             PmTilesSink.checkTarget(output);
@@ -119,31 +142,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
             DirectorySink.checkTarget(output);
         }
         refuseInputAsOutput(output);
-        DemInfo info = DemReader.inspect(input).withDefaultEllipsoid(Ellipsoid.WGS84);
-        SourceProjection projection = SourceProjection.of(info.geometry(), info.source());
-        for (String notice : info.notices()) {
-            listener.notice(notice);
-        }
-        ElevationStatistics range = DemReader.statistics(input);
-        if (range.isEmpty()) {
-            throw new IOException(info.source() + " holds no elevations (every cell is no-data)");
-        }
-        listener.phaseDone("read");
-        Scene lit = sceneFor(info, range, listener);
-        try (TileSink sink = format == TileFormat.PMTILES ? new PmTilesSink(output) : new DirectorySink(output)) {
-            PyramidRun run = new PyramidRun(this, projection, lit, range, sink, listener);
-            TileReport report = run.execute(output, format);
-            listener.phaseDone("render");
-            if (report.written() == 0) {
-                throw new IOException("no tile of zoom " + zooms + " holds data of " + info.source()
-                        + ": nothing written");
-            }
-            String name = input.first().getFileName().toString();
-            sink.commit(new TileSink.TileSetInfo(name, "Shaded relief of " + name + " by jdem846", zooms,
-                    projection.extent()));
-            listener.phaseDone("write");
-            return report;
-        }
+        return format;
     }
 
     /**

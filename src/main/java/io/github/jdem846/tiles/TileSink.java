@@ -1,12 +1,26 @@
 package io.github.jdem846.tiles;
 
+import io.github.jdem846.geo.LatLonBox;
 import java.io.IOException;
+import java.nio.file.Path;
 
 /**
- * Where finished tiles go. {@link #write} may be called from several threads at once; nothing is visible at the
- * final path before {@link #commit}, and {@link #close} without a commit removes everything written.
+ * Where finished tiles go: a {@code z/x/y.png} directory or a PMTiles archive. {@link #write} may be called from
+ * several threads at once and in any order (the archive comes out the same); nothing is visible at the final path
+ * before {@link #commit}, and {@link #close} without a commit removes everything written.
  */
-interface TileSink extends AutoCloseable {
+public interface TileSink extends AutoCloseable {
+
+    /**
+     * Opens the sink {@link TileFormat#of} {@code output} names: a {@code .pmtiles} archive, or else a directory
+     * that does not exist yet or is empty.
+     *
+     * @throws IOException              when the output cannot be written there (naming it and why)
+     * @throws IllegalArgumentException for a format that is not written ({@code .mbtiles})
+     */
+    static TileSink open(Path output) throws IOException {
+        return TileFormat.of(output) == TileFormat.PMTILES ? new PmTilesSink(output) : new DirectorySink(output);
+    }
 
     /** Takes one encoded tile. */
     void write(WebMercatorTile tile, byte[] png) throws IOException;
@@ -26,6 +40,6 @@ interface TileSink extends AutoCloseable {
      * @param zooms       the zoom levels asked for
      * @param bounds      the DEM's latitude/longitude box
      */
-    record TileSetInfo(String name, String description, ZoomRange zooms, io.github.jdem846.geo.LatLonBox bounds) {
+    record TileSetInfo(String name, String description, ZoomRange zooms, LatLonBox bounds) {
     }
 }

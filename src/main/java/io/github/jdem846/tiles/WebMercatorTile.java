@@ -13,7 +13,9 @@ import io.github.jdem846.geo.WebMercator;
  * @param x column, 0 to 2^z − 1
  * @param y row, 0 to 2^z − 1
  */
-public record WebMercatorTile(int z, int x, int y) {
+public record WebMercatorTile(int z, int x, int y) implements java.io.Serializable {
+
+    private static final long serialVersionUID = 1L;
 
     /** Pixels on a side of a tile. */
     public static final int SIZE = 256;
