@@ -332,13 +332,42 @@ public final class DemReader {
         return statistics(DemInput.of(file), parallelism, minCellsPerPart);
     }
 
+    /**
+     * {@link #statistics(DemInput)} of the cells of {@code window} only: one part of a range measured in parts
+     * (the parts' statistics {@link ElevationStatistics#merge merged} are those of the whole).
+     *
+     * @param input  the DEM file or files
+     * @param window cells of the grid, inside it
+     * @return the statistics of the window's valid cells at full resolution
+     * @throws IOException              naming the file when it cannot be read
+     * @throws IllegalArgumentException when the window does not lie inside the grid
+     */
+    public static ElevationStatistics statistics(DemInput input, Window.Cells window) throws IOException {
+        Objects.requireNonNull(window, "window");
+        return statistics(input, window, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
+    }
+
     static ElevationStatistics statistics(DemInput input, int parallelism, long minCellsPerPart)
             throws IOException {
+        return statistics(input, null, parallelism, minCellsPerPart);
+    }
+
+    private static ElevationStatistics statistics(DemInput input, Window.Cells window, int parallelism,
+                                                  long minCellsPerPart) throws IOException {
         Path file = input.first();
         try (RasterSource source = open(input)) {
             DemInfo info = source.info();
             double noData = info.noDataOrNaN();
             Window.Cells all = new Window.Cells(0, 0, info.width(), info.height());
+            if (window != null) {
+                if (window.col() < 0 || window.row() < 0 || window.width() < 1 || window.height() < 1
+                        || (long) window.col() + window.width() > info.width()
+                        || (long) window.row() + window.height() > info.height()) {
+                    throw new IllegalArgumentException("the window " + window + " does not lie inside the "
+                            + info.width() + " × " + info.height() + " grid of " + file);
+                }
+                all = window;
+            }
             requireBandFits(file, source, all, 1);
             MemoryGuard.requireFits(file, 0, 0, BlockReader.bandBytes(source, all, 1), "give Java more heap"
                     + " with -Xmx");
