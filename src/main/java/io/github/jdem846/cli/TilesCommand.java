@@ -94,27 +94,8 @@ public final class TilesCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        sun.requireConsistent(new BodyOptions());
         PrintWriter err = spec.commandLine().getErr();
-        shadowOptions.noteUnused(algorithm, err);
-        if (shading.xyScale != null) {
-            throw Usage.error(spec, "--xy-scale does not apply to tiles: their cells are measured in ground metres "
-                    + "row by row");
-        }
-        if (sun.perTile) {
-            throw Usage.error(spec, "--sun-per-tile does not apply to tiles: every tile gets the sun seen from the "
-                    + "DEM's centre (or --sun-at), so that the light matches across tiles");
-        }
-        Usage.check(spec, "--output", () -> TileFormat.of(output));
-        Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(method)
-                .withHillshadeOptions(shading.options()).withShadows(algorithm)
-                .withShadowOptions(shadowOptions.options()).withShadowIntensity(shadowIntensity);
-        InputPaths.Resolved resolved = InputPaths.resolve(spec, files);
-        for (String note : resolved.notes()) {
-            spec.commandLine().getErr().println("jdem846: note: " + note);
-        }
-        TileJob job = TileJob.of(resolved.input(), zooms).withScene(scene).withSun(sun.sun())
-                .withExecution(execution.settings()).withPngCompression(pngLevel);
+        TileJob job = tileJob(err, files);
         PhaseTimes times = new PhaseTimes();
         TileReport report;
         try (ConsoleProgress progress = ConsoleProgress.create(quiet)) {
@@ -151,6 +132,49 @@ public final class TilesCommand implements Callable<Integer> {
         }
         times.print(verbose.isVerbose(), err);
         return 0;
+    }
+
+    /**
+     * The job these parsed arguments describe, with its DEM read from {@code inputs} (the FILE arguments as given,
+     * or their local copies): checked as {@code call} checks them; notes on the inputs go to {@code err}. For
+     * another runner of the same arguments (the Spark job) after {@code new CommandLine(command).parseArgs(args)}.
+     *
+     * @throws CommandLine.ParameterException for options that do not go together or inputs that name no DEM
+     * @throws java.io.IOException              when a directory of inputs cannot be listed
+     */
+    public TileJob tileJob(PrintWriter err, java.util.List<String> inputs) throws java.io.IOException {
+        sun.requireConsistent(new BodyOptions());
+        shadowOptions.noteUnused(algorithm, err);
+        if (shading.xyScale != null) {
+            throw Usage.error(spec, "--xy-scale does not apply to tiles: their cells are measured in ground metres "
+                    + "row by row");
+        }
+        if (sun.perTile) {
+            throw Usage.error(spec, "--sun-per-tile does not apply to tiles: every tile gets the sun seen from the "
+                    + "DEM's centre (or --sun-at), so that the light matches across tiles");
+        }
+        Usage.check(spec, "--output", () -> TileFormat.of(output));
+        Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(method)
+                .withHillshadeOptions(shading.options()).withShadows(algorithm)
+                .withShadowOptions(shadowOptions.options()).withShadowIntensity(shadowIntensity);
+        InputPaths.Resolved resolved = InputPaths.resolve(spec, inputs);
+        for (String note : resolved.notes()) {
+            err.println("jdem846: note: " + note);
+        }
+        err.flush();
+        return TileJob.of(resolved.input(), zooms).withScene(scene).withSun(sun.sun())
+                .withExecution(execution.settings()).withPngCompression(pngLevel);
+    }
+
+    /** @return the FILE arguments as given */
+    public java.util.List<String> files() {
+        return java.util.List.copyOf(files);
+    }
+
+    /** @return the {@code -o} argument as typed (a URI such as {@code hdfs://…} kept whole) */
+    public String outputArgument() {
+        java.util.List<String> typed = spec.findOption("--output").originalStringValues();
+        return typed.isEmpty() ? output.toString() : typed.get(typed.size() - 1);
     }
 
     /** "wrote 85 tiles of zoom 8-12 to OUT (3 empty tiles left out)" with one clause per zoom. */

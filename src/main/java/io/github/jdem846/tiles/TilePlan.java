@@ -102,13 +102,22 @@ public final class TilePlan {
      * @throws IllegalArgumentException as {@link #prepare(TileJob, JobListener)}, or for an empty range
      */
     public static TilePlan prepare(TileJob job, ElevationStatistics range) throws IOException {
+        return prepare(job, range, JobListener.NONE);
+    }
+
+    /**
+     * {@link #prepare(TileJob, ElevationStatistics)}, telling {@code listener} of the sun computed (a driver that
+     * measured the range in parts reports it).
+     */
+    public static TilePlan prepare(TileJob job, ElevationStatistics range, JobListener listener) throws IOException {
         Objects.requireNonNull(job, "job");
         Objects.requireNonNull(range, "range");
+        Objects.requireNonNull(listener, "listener");
         if (range.isEmpty()) {
             throw new IllegalArgumentException("the elevation range holds no elevations");
         }
         job.requireTileable();
-        return new TilePlan(job, inspect(job), range, JobListener.NONE);
+        return new TilePlan(job, inspect(job), range, listener);
     }
 
     private static DemInfo inspect(TileJob job) throws IOException {
