@@ -76,7 +76,7 @@ public final class SparkTilesMain {
         } catch (IOException | UncheckedIOException | IllegalArgumentException e) {
             err.println(NAME + ": " + Failures.oneLine(e));
             return 1;
-        } catch (RuntimeException e) { // SparkException (unchecked in Java) after a task's retries
+        } catch (Exception e) { // SparkException (checked, though no signature says so) after a task's retries
             err.println(NAME + ": " + Failures.oneLine(e));
             return 1;
         }

@@ -152,6 +152,26 @@ class SparkTilesTest {
     }
 
     @Test
+    void aTileThatFailsOnTheExecutorsFailsTheJobWithOneLine() throws Exception {
+        // a GeoTIFF whose header reads but whose Deflate strips do not (3000 bytes from 120 000 on overwritten: the
+        // CLI says "cannot decode rows 0–343 … Unexpected end of ZLIB input stream"): found by the tasks
+        Path bad = Files.createDirectories(dir.resolve("corrupt")).resolve("jacksboro.tif");
+        byte[] tif = Files.readAllBytes(Path.of(JACKSBORO + ".tif"));
+        java.util.Arrays.fill(tif, 120_000, 123_000, (byte) 0xff);
+        Files.write(bad, tif);
+        Path out = dir.resolve("corrupt").resolve("tiles");
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int status = SparkTilesMain.run(new String[] {bad.toString(), "--zoom", "8-9", "-o", out.toString()},
+                new PrintStream(new ByteArrayOutputStream()), new PrintStream(err, true, StandardCharsets.UTF_8), sc);
+        String message = err.toString(StandardCharsets.UTF_8).strip();
+        assertEquals(1, status, message);
+        assertEquals(1, message.lines().count(), message);
+        assertTrue(message.startsWith("jdem846-spark: " + bad + ": cannot decode"), message);
+        assertFalse(Files.exists(out));
+        assertNoStaging(out.getParent());
+    }
+
+    @Test
     void badUsageExitsTwoBeforeSparkStarts() {
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         Integer status = SparkTilesMain.checkUsage(new String[] {mosaic.get(0), "--zoom", "99", "-o", "x.pmtiles"},
