@@ -14,12 +14,12 @@ import picocli.CommandLine.Option;
  * {@code jdem846 hillshade FILE -o OUT.png|OUT.tif}: a single-band gray hillshade, 1..255 with 0 = no-data, like
  * {@code gdaldem hillshade -compute_edges} (horn and multidirectional give gdaldem's bytes).
  */
-@Command(name = "hillshade", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
-        sortOptions = false,
-        description = "Write a gray hillshade (0 = no-data, 1..255), gdaldem-compatible for horn/multidirectional.",
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {"0:written", "1:an input could not be read or the output not written", "2:bad usage"})
+@Command(name = "hillshade", mixinStandardHelpOptions = true,
+        description = "Write a gray hillshade (0 = no-data, 1..255), gdaldem-compatible for horn/multidirectional.")
 public final class HillshadeCommand implements Callable<Integer> {
+
+    @Mixin
+    WritingCommandAttributes attributes;
 
     @Mixin
     InputOptions input;

@@ -14,12 +14,12 @@ import picocli.CommandLine.Option;
  * {@code jdem846 shadows FILE -o MASK.png|MASK.tif}: the cast-shadow mask, 8-bit, 0 = lit, 255 = in shadow (soft
  * shadows: 0–255 = shadowed fraction), row 0 = north, no-data cells 0.
  */
-@Command(name = "shadows", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
-        sortOptions = false,
-        description = "Write the ray-traced cast-shadow mask: 0 = lit, 255 = in shadow (soft: shadowed fraction).",
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {"0:written", "1:an input could not be read or the output not written", "2:bad usage"})
+@Command(name = "shadows", mixinStandardHelpOptions = true,
+        description = "Write the ray-traced cast-shadow mask: 0 = lit, 255 = in shadow (soft: shadowed fraction).")
 public final class ShadowsCommand implements Callable<Integer> {
+
+    @Mixin
+    WritingCommandAttributes attributes;
 
     @Mixin
     InputOptions input;

@@ -1,22 +1,22 @@
 package io.github.jdem846.cli;
 
-import io.github.jdem846.io.DemInput;
 import io.github.jdem846.job.JobListener;
 import io.github.jdem846.render.Scene;
-import io.github.jdem846.shade.HillshadeMethod;
-import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.sun.SunPosition;
 import io.github.jdem846.tiles.TileFormat;
 import io.github.jdem846.tiles.TileJob;
 import io.github.jdem846.tiles.TileReport;
 import io.github.jdem846.tiles.ZoomRange;
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.ListResourceBundle;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -24,13 +24,13 @@ import picocli.CommandLine.Parameters;
  * {@code jdem846 tiles FILE --zoom 0-12 -o DIR|OUT.pmtiles}: a web-map tile pyramid (Web Mercator, XYZ scheme) of
  * the relief, every zoom rendered from the DEM at its own resolution, with the shading options of {@code render}.
  */
-@Command(name = "tiles", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
-        sortOptions = false,
+@Command(name = "tiles", mixinStandardHelpOptions = true,
         description = "Render web-map tiles (Web Mercator, z/x/y, 256 × 256 PNG) of the relief for a range of zoom "
-                + "levels: a z/x/y.png directory, or one PMTiles archive when OUT ends in .pmtiles.",
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {"0:written", "1:an input could not be read or the output not written", "2:bad usage"})
+                + "levels: a z/x/y.png directory, or one PMTiles archive when OUT ends in .pmtiles.")
 public final class TilesCommand implements Callable<Integer> {
+
+    @Mixin
+    WritingCommandAttributes attributes;
 
     @Parameters(arity = "1..*", paramLabel = "FILE",
             description = "GeoTIFF, GridFloat (.flt), ESRI ASCII (.asc), BIL (.bil) or SRTM .hgt with a known CRS; "
@@ -56,29 +56,7 @@ public final class TilesCommand implements Callable<Integer> {
     boolean quiet;
 
     @Mixin
-    TintOptions tint;
-
-    @Option(names = "--hillshade", paramLabel = "METHOD", defaultValue = "jdem846",
-            converter = Converters.HillshadeOrNone.class,
-            description = "jdem846 (the article's, default), horn, multidirectional or none.")
-    HillshadeMethod method;
-
-    @Mixin
-    ShadingOptions shading;
-
-    @Option(names = "--shadows", paramLabel = "ALGORITHM", defaultValue = "none",
-            converter = Converters.Algorithm.class,
-            description = "Cast shadows: none (default), sweep, march or exact; each tile reads the terrain toward "
-                    + "the sun that can shade it, so shadows run on across tiles.")
-    ShadowAlgorithm algorithm;
-
-    @Option(names = "--shadow-intensity", paramLabel = "0..1", defaultValue = "0.4",
-            converter = Converters.ShadowIntensity.class,
-            description = "A cell in cast shadow loses 2 × this much brightness, 0 to 1. Default: ${DEFAULT-VALUE}.")
-    double shadowIntensity;
-
-    @Mixin
-    ShadowCliOptions shadowOptions;
+    SceneOptions sceneOptions;
 
     @Mixin
     SunOptions sun;
@@ -89,13 +67,89 @@ public final class TilesCommand implements Callable<Integer> {
     @Mixin
     VerboseOption verbose;
 
+    CommandSpec spec;
+
+    /**
+     * Picocli hands over the command's spec. Here tiles also gives it the {@link Descriptions} of the options it
+     * words its own way, as a bundle instance, so that nothing is looked up by name.
+     */
     @CommandLine.Spec
-    CommandLine.Model.CommandSpec spec;
+    void spec(CommandSpec value) {
+        spec = value;
+        value.resourceBundle(new Descriptions());
+    }
+
+    /**
+     * The tile job the parsed arguments describe, the one {@link #call()} runs: the options checked against each
+     * other as for {@code jdem846 tiles}, and the FILE arguments resolved (a directory or a quoted glob to the DEM
+     * files in it, as a mosaic). For a program that runs the job itself after
+     * {@code new CommandLine(new TilesCommand()).parseArgs(args)}; the tiles go to {@link #output()}.
+     *
+     * @param err where notes go: an option that has no effect, how many DEM files a directory or glob gave
+     * @return the job
+     * @throws CommandLine.ParameterException on bad usage, with the message {@code jdem846 tiles} prints: options
+     *                                        that do not go together or do not apply to tiles ({@code --xy-scale},
+     *                                        {@code --sun-per-tile}), an output that is neither a directory nor a
+     *                                        {@code .pmtiles} name, an unknown ramp, a glob that matches no DEM
+     * @throws IOException                    when a colour file or a directory named cannot be read, or the
+     *                                        directory holds no DEM file
+     * @throws IllegalArgumentException       when {@code --tint} names a colour file that does not exist
+     */
+    public TileJob tileJob(PrintWriter err) throws IOException {
+        return tileJob(err, files);
+    }
+
+    /**
+     * {@link #tileJob(PrintWriter)} with its DEM read from {@code inputs} in place of the FILE arguments: for a
+     * runner that reads copies of them (the Spark job's executors, which get remote files copied to local disk).
+     *
+     * @param inputs files, directories or quoted globs, as FILE arguments are
+     */
+    public TileJob tileJob(PrintWriter err, java.util.List<String> inputs) throws IOException {
+        sun.requireConsistent(new BodyOptions());
+        sceneOptions.noteUnused(err);
+        if (sceneOptions.xyScaleGiven()) {
+            throw Usage.error(spec, "--xy-scale does not apply to tiles: their cells are measured in ground metres "
+                    + "row by row");
+        }
+        if (sun.perTile) {
+            throw Usage.error(spec, "--sun-per-tile does not apply to tiles: every tile gets the sun seen from the "
+                    + "DEM's centre (or --sun-at), so that the light matches across tiles");
+        }
+        Usage.check(spec, "--output", () -> TileFormat.of(output));
+        Scene scene = sceneOptions.scene();
+        InputPaths.Resolved resolved = InputPaths.resolve(spec, inputs);
+        for (String note : resolved.notes()) {
+            err.println("jdem846: note: " + note);
+        }
+        return TileJob.of(resolved.input(), zooms).withScene(scene).withSun(sun.sun())
+                .withExecution(execution.settings()).withPngCompression(pngLevel);
+    }
+
+    /**
+     * The parsed {@code -o}: a directory for z/x/y.png tiles, or a {@code .pmtiles} archive.
+     *
+     * @return the output path as given
+     */
+    public Path output() {
+        return output;
+    }
+
+    /** @return the FILE arguments as given */
+    public java.util.List<String> files() {
+        return java.util.List.copyOf(files);
+    }
+
+    /** @return the {@code -o} argument as typed: a URI such as {@code hdfs://host/tiles} kept whole */
+    public String outputArgument() {
+        java.util.List<String> typed = spec.findOption("--output").originalStringValues();
+        return typed.isEmpty() ? output.toString() : typed.get(typed.size() - 1);
+    }
 
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
-        TileJob job = tileJob(err, files);
+        TileJob job = tileJob(err);
         PhaseTimes times = new PhaseTimes();
         TileReport report;
         try (ConsoleProgress progress = ConsoleProgress.create(quiet)) {
@@ -132,49 +186,6 @@ public final class TilesCommand implements Callable<Integer> {
         }
         times.print(verbose.isVerbose(), err);
         return 0;
-    }
-
-    /**
-     * The job these parsed arguments describe, with its DEM read from {@code inputs} (the FILE arguments as given,
-     * or their local copies): checked as {@code call} checks them; notes on the inputs go to {@code err}. For
-     * another runner of the same arguments (the Spark job) after {@code new CommandLine(command).parseArgs(args)}.
-     *
-     * @throws CommandLine.ParameterException for options that do not go together or inputs that name no DEM
-     * @throws java.io.IOException              when a directory of inputs cannot be listed
-     */
-    public TileJob tileJob(PrintWriter err, java.util.List<String> inputs) throws java.io.IOException {
-        sun.requireConsistent(new BodyOptions());
-        shadowOptions.noteUnused(algorithm, err);
-        if (shading.xyScale != null) {
-            throw Usage.error(spec, "--xy-scale does not apply to tiles: their cells are measured in ground metres "
-                    + "row by row");
-        }
-        if (sun.perTile) {
-            throw Usage.error(spec, "--sun-per-tile does not apply to tiles: every tile gets the sun seen from the "
-                    + "DEM's centre (or --sun-at), so that the light matches across tiles");
-        }
-        Usage.check(spec, "--output", () -> TileFormat.of(output));
-        Scene scene = Scene.defaults().withTint(tint.ramp()).withHillshade(method)
-                .withHillshadeOptions(shading.options()).withShadows(algorithm)
-                .withShadowOptions(shadowOptions.options()).withShadowIntensity(shadowIntensity);
-        InputPaths.Resolved resolved = InputPaths.resolve(spec, inputs);
-        for (String note : resolved.notes()) {
-            err.println("jdem846: note: " + note);
-        }
-        err.flush();
-        return TileJob.of(resolved.input(), zooms).withScene(scene).withSun(sun.sun())
-                .withExecution(execution.settings()).withPngCompression(pngLevel);
-    }
-
-    /** @return the FILE arguments as given */
-    public java.util.List<String> files() {
-        return java.util.List.copyOf(files);
-    }
-
-    /** @return the {@code -o} argument as typed (a URI such as {@code hdfs://…} kept whole) */
-    public String outputArgument() {
-        java.util.List<String> typed = spec.findOption("--output").originalStringValues();
-        return typed.isEmpty() ? output.toString() : typed.get(typed.size() - 1);
     }
 
     /** "wrote 85 tiles of zoom 8-12 to OUT (3 empty tiles left out)" with one clause per zoom. */
@@ -216,6 +227,20 @@ public final class TilesCommand implements Callable<Integer> {
                 // below
             }
             throw new CommandLine.TypeConversionException("'" + value + "' is not a deflate level 0 to 9");
+        }
+    }
+
+    /**
+     * The descriptions tiles gives options it shares with {@code render} ({@link SceneOptions}): picocli reads an
+     * option's description from the command's resource bundle, by its description key, before the option's own.
+     */
+    private static final class Descriptions extends ListResourceBundle {
+        @Override
+        protected Object[][] getContents() {
+            return new Object[][] {
+                {"shadows", "Cast shadows: none (default), sweep, march or exact; each tile reads the terrain toward "
+                        + "the sun that can shade it, so shadows run on across tiles."},
+            };
         }
     }
 }

@@ -12,12 +12,12 @@ import picocli.CommandLine.Mixin;
  * {@code jdem846 tint FILE -o OUT.png --tint NAME|FILE}: the hypsometric/bathymetric tint alone (like
  * {@code gdaldem color-relief -alpha}); no-data is transparent.
  */
-@Command(name = "tint", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
-        sortOptions = false,
-        description = "Write the elevation tint alone (RGBA, no-data transparent), like gdaldem color-relief -alpha.",
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {"0:written", "1:an input could not be read or the output not written", "2:bad usage"})
+@Command(name = "tint", mixinStandardHelpOptions = true,
+        description = "Write the elevation tint alone (RGBA, no-data transparent), like gdaldem color-relief -alpha.")
 public final class TintCommand implements Callable<Integer> {
+
+    @Mixin
+    WritingCommandAttributes attributes;
 
     @Mixin
     InputOptions input;

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
 
 class MainTest {
 
@@ -49,5 +50,45 @@ class MainTest {
             assertTrue(next > at, option + " after the previous one in:\n" + help);
             at = next;
         }
+    }
+
+    /**
+     * The commands that write a file share their {@code @Command} attributes ({@link WritingCommandAttributes}):
+     * the version, the exit status list, the options as declared with -h and -V last.
+     */
+    @Test
+    void everyWritingCommandHasTheVersionAndTheExitStatusList() {
+        String exitStatus = String.format("%nExit status:%n  0   written%n  1   an input could not be read or the output "
+                + "not written%n  2   bad usage%n");
+        for (String name : List.of("render", "hillshade", "tint", "shadows", "tiles")) {
+            String help = CliRun.of(name, "--help").out();
+            assertTrue(help.endsWith(exitStatus), name + ":\n" + help);
+            assertTrue(help.indexOf("--verbose ") < help.indexOf("-h, --help"), name + ":\n" + help);
+            CliRun version = CliRun.of(name, "--version");
+            assertEquals(0, version.exitCode());
+            assertTrue(version.out().startsWith("jdem846 "), name + ": " + version.out());
+        }
+    }
+
+    /** render and tiles declare their scene options once ({@link SceneOptions}); tiles words --shadows its own way. */
+    @Test
+    void sharedOptionsKeepEachCommandsWording() {
+        CommandLine all = Main.commandLine();
+        String render = shadowsText(all.getSubcommands().get("render"));
+        String tiles = shadowsText(all.getSubcommands().get("tiles"));
+        assertTrue(render.endsWith("march (the article's ray march, fixed) or exact (the slow reference)."), render);
+        assertTrue(tiles.endsWith("each tile reads the terrain toward the sun that can shade it, so shadows run on "
+                + "across tiles."), tiles);
+        for (String name : List.of("render", "tiles")) {
+            CommandLine.Model.CommandSpec spec = all.getSubcommands().get(name).getCommandSpec();
+            assertEquals("0.4", spec.findOption("--shadow-intensity").defaultValue(), name);
+            assertTrue(String.join(" ", spec.findOption("--hillshade").description()).startsWith("jdem846"), name);
+        }
+        String help = CliRun.of("tiles", "--help").out();
+        assertTrue(help.contains("so shadows run on across tiles."), help);
+    }
+
+    private static String shadowsText(CommandLine command) {
+        return String.join(" ", command.getCommandSpec().findOption("--shadows").description());
     }
 }

@@ -2,18 +2,30 @@ package io.github.jdem846.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.jdem846.io.DemInput;
+import io.github.jdem846.job.Sun;
+import io.github.jdem846.shade.HillshadeMethod;
+import io.github.jdem846.shadow.ShadowAlgorithm;
+import io.github.jdem846.tiles.TileJob;
+import io.github.jdem846.tiles.ZoomRange;
 import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.stream.Stream;
+import picocli.CommandLine;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
  * {@code jdem846 tiles} end to end on Luxembourg (30″, no-data outside the border, so some tiles hold nothing): the
- * tiles and the summary, the archive, and the exit status of bad usage (2) and of outputs that cannot be written (1).
+ * tiles and the summary, the archive, and the exit status of bad usage (2) and of outputs that cannot be written (1);
+ * and the job a program gets from parsed arguments ({@link TilesCommand#tileJob}) without running it.
  */
 class TilesCommandTest {
 
@@ -110,6 +122,68 @@ class TilesCommandTest {
         assertTrue(missing.err().contains("no-such-dem.tif"), missing.err());
         try (Stream<Path> left = Files.list(dir)) {
             assertEquals(1, left.count(), "nothing but the directory that was there");
+        }
+    }
+
+    @Test
+    void parsedArgumentsGiveTheTileJobAndTheOutput() throws IOException {
+        TilesCommand command = new TilesCommand();
+        new CommandLine(command).parseArgs(LUX, "--zoom", "3-5", "--shadows", "sweep", "--sun-elevation", "20",
+                "-o", "x.pmtiles");
+        StringWriter err = new StringWriter();
+        TileJob job = command.tileJob(new PrintWriter(err, true));
+        assertEquals(new ZoomRange(3, 5), job.zooms());
+        assertEquals(ShadowAlgorithm.SWEEP, job.scene().shadows());
+        assertEquals(HillshadeMethod.JDEM846, job.scene().hillshade());
+        assertEquals(0.4, job.scene().shadowIntensity());
+        assertEquals(Sun.fixed(320, 20), job.sun());
+        assertEquals(DemInput.of(Path.of(LUX)), job.input());
+        assertEquals(TileJob.DEFAULT_PNG_COMPRESSION, job.pngCompression());
+        assertEquals(Path.of("x.pmtiles"), command.output());
+        assertEquals("", err.toString(), "nothing to note");
+        assertFalse(Files.exists(Path.of("x.pmtiles")), "nothing written");
+    }
+
+    @Test
+    void theTileJobNotesWhatCallWouldNote() throws IOException {
+        Path mosaic = Files.createDirectories(dir.resolve("mosaic"));
+        Files.copy(Path.of(LUX), mosaic.resolve("lux.tif"));
+        Files.writeString(mosaic.resolve("README.txt"), "not a DEM");
+        TilesCommand command = new TilesCommand();
+        new CommandLine(command).parseArgs(mosaic.toString(), "--zoom", "8", "--shadows", "march",
+                "--thin-features", "--png-level", "1", "-o", dir.resolve("out").toString());
+        StringWriter err = new StringWriter();
+        TileJob job = command.tileJob(new PrintWriter(err, true));
+        assertEquals(DemInput.of(java.util.List.of(mosaic.resolve("lux.tif"))), job.input());
+        assertEquals(ShadowAlgorithm.MARCH, job.scene().shadows());
+        assertEquals(1, job.pngCompression());
+        assertTrue(err.toString().contains("jdem846: note: --thin-features changes only the sweep"), err.toString());
+        assertTrue(err.toString().contains("1 DEM file (1 other entry skipped)"), err.toString());
+    }
+
+    @Test
+    void theTileJobRefusesWhatTheCommandRefuses() {
+        String[][] bad = {
+            {LUX, "--zoom", "3-5", "-o", "x.pmtiles", "--xy-scale", "2"},
+            {LUX, "--zoom", "3-5", "-o", "x.pmtiles", "--sun-time", "2024-06-21T12:00Z", "--sun-per-tile"},
+            {LUX, "--zoom", "3-5", "-o", "x.pmtiles", "--sun-at", "49.6,6.1"},
+            {LUX, "--zoom", "3-5", "-o", "x.mbtiles"},
+            {LUX, "--zoom", "3-5", "-o", "x.pmtiles", "--tint", "no-such-ramp"},
+        };
+        for (String[] args : bad) {
+            TilesCommand command = new TilesCommand();
+            CommandLine cl = new CommandLine(command);
+            cl.parseArgs(args);
+            CommandLine.ParameterException e = assertThrows(CommandLine.ParameterException.class,
+                    () -> command.tileJob(new PrintWriter(new StringWriter())), String.join(" ", args));
+            assertSame(cl, e.getCommandLine(), "the usage error names the command line that parsed the arguments");
+            String[] cli = new String[args.length + 1];
+            cli[0] = "tiles";
+            System.arraycopy(args, 0, cli, 1, args.length);
+            CliRun run = CliRun.of(cli);
+            assertEquals(2, run.exitCode(), run.err());
+            assertEquals("jdem846: " + e.getMessage(), run.err().lines().findFirst().orElseThrow(),
+                    "the same message as jdem846 tiles");
         }
     }
 }
