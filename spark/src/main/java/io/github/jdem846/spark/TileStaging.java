@@ -9,14 +9,16 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.Serializable;
 import java.net.URI;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.List;
 import java.util.UUID;
 import org.apache.hadoop.conf.Configuration;
 import org.apache.hadoop.fs.FSDataOutputStream;
 import org.apache.hadoop.fs.FileStatus;
 import org.apache.hadoop.fs.FileSystem;
-import org.apache.hadoop.fs.LocatedFileStatus;
 import org.apache.hadoop.fs.Path;
-import org.apache.hadoop.fs.RemoteIterator;
 import org.apache.hadoop.io.IOUtils;
 
 /**
@@ -127,9 +129,7 @@ final class TileStaging implements Serializable {
         java.nio.file.Path archive = local ? java.nio.file.Path.of(out.toUri())
                 : java.nio.file.Files.createTempDirectory("jdem846-spark").resolve(out.getName());
         try (TileSink sink = TileSink.open(archive)) {
-            RemoteIterator<LocatedFileStatus> files = fs.listFiles(stage, true);
-            while (files.hasNext()) {
-                Path p = files.next().getPath();
+            for (Path p : filesUnder(fs, stage)) {
                 WebMercatorTile tile = tileOf(stage, p);
                 byte[] png = new byte[(int) fs.getFileStatus(p).getLen()];
                 try (InputStream in = fs.open(p)) {
@@ -176,17 +176,26 @@ final class TileStaging implements Serializable {
 
     /** Temporaries of attempts that did not get to rename them (an executor lost mid-write). */
     private static void deleteTemporaries(FileSystem fs, Path stage) throws IOException {
-        RemoteIterator<LocatedFileStatus> files = fs.listFiles(stage, true);
-        java.util.List<Path> stale = new java.util.ArrayList<>();
-        while (files.hasNext()) {
-            Path p = files.next().getPath();
+        for (Path p : filesUnder(fs, stage)) {
             if (p.getName().startsWith(".")) {
-                stale.add(p);
+                fs.delete(p, false);
             }
         }
-        for (Path p : stale) {
-            fs.delete(p, false);
+    }
+
+    /** Every file under {@code root}, depth first, in name order. */
+    private static List<Path> filesUnder(FileSystem fs, Path root) throws IOException {
+        List<Path> out = new ArrayList<>();
+        FileStatus[] entries = fs.listStatus(root);
+        Arrays.sort(entries, Comparator.comparing(f -> f.getPath().getName()));
+        for (FileStatus f : entries) {
+            if (f.isDirectory()) {
+                out.addAll(filesUnder(fs, f.getPath()));
+            } else {
+                out.add(f.getPath());
+            }
         }
+        return out;
     }
 
     private static Path qualified(String output, Configuration conf) throws IOException {

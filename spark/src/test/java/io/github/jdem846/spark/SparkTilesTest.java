@@ -51,7 +51,8 @@ class SparkTilesTest {
         // two cores, and up to 4 attempts per task so that a failed task is retried
         sc = new JavaSparkContext(new SparkConf().setMaster("local[2,4]").setAppName("SparkTilesTest")
                 .set("spark.ui.enabled", "false").set("spark.driver.host", "127.0.0.1")
-                .set("spark.ui.showConsoleProgress", "false"));
+                .set("spark.ui.showConsoleProgress", "false")
+                .set("spark.hadoop.fs." + RemoteLikeFileSystem.SCHEME + ".impl", RemoteLikeFileSystem.class.getName()));
         sc.setLogLevel("ERROR");
         mosaic = GridFloatCuts.quarters(JACKSBORO, 200, 170, dir.resolve("mosaic")).stream()
                 .map(Path::toString).toList();
@@ -88,6 +89,19 @@ class SparkTilesTest {
         assertEquals(expected.written(), report.written());
         assertEquals(expected.bytes(), report.bytes());
         assertTrue(report.written() > 16, "more than one group of tiles: " + report.written());
+        assertNoStaging(dir);
+    }
+
+    @Test
+    void inputsAndOutputOnAnotherFileSystemGiveTheSameArchive() throws Exception {
+        Path one = dir.resolve("one-for-remote.pmtiles");
+        single(one);
+        Path remote = dir.resolve("remote.pmtiles");
+        String scheme = RemoteLikeFileSystem.SCHEME + "://";
+        List<String> a = new ArrayList<>(List.of(scheme + dir.resolve("mosaic").toAbsolutePath() + "/*.flt"));
+        a.addAll(args(scheme + remote.toAbsolutePath()).subList(mosaic.size(), args("x").size()));
+        SparkTiles.run(sc, a, JobListener.NONE);
+        assertArrayEquals(Files.readAllBytes(one), Files.readAllBytes(remote));
         assertNoStaging(dir);
     }
 
