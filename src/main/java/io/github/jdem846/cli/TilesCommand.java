@@ -135,6 +135,11 @@ public final class TilesCommand implements Callable<Integer> {
         return output;
     }
 
+    /** @return whether {@code -q} asked for no progress bar and no summary line */
+    public boolean quiet() {
+        return quiet;
+    }
+
     /** @return the FILE arguments as given */
     public java.util.List<String> files() {
         return java.util.List.copyOf(files);

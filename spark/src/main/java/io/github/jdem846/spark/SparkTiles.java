@@ -19,6 +19,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.apache.hadoop.conf.Configuration;
 import org.apache.spark.api.java.JavaSparkContext;
+import org.apache.spark.broadcast.Broadcast;
 
 /**
  * {@code jdem846 tiles} on Apache Spark: the same arguments, the same tiles, byte for byte.
@@ -40,6 +41,11 @@ public final class SparkTiles {
 
     /** Cells of the DEM read by one task of the range stage. */
     static final long CELLS_PER_BAND = 1L << 24;
+    /**
+     * Tasks of the render stage per core, at most: enough that cores which finish early take more, few enough that
+     * Spark's cost per task (tens of milliseconds) stays small against a task's groups.
+     */
+    static final int TASKS_PER_CORE = 16;
 
     private SparkTiles() {
     }
@@ -97,10 +103,16 @@ public final class SparkTiles {
             boolean committed = false;
             try {
                 List<TileGroup> groups = plan.groups();
-                int slices = Math.max(1, Math.min(groups.size(), 4 * sc.defaultParallelism()));
-                RenderedPart total = sc.parallelize(groups, slices)
-                        .mapPartitions(new GroupTask(arguments, inputs, range, staging, new HadoopConf(conf), probe))
-                        .reduce(RenderedPart::plus);
+                int slices = Math.max(1, Math.min(groups.size(), TASKS_PER_CORE * sc.defaultParallelism()));
+                Broadcast<PlanSource> source = sc.broadcast(new PlanSource(arguments, inputs, range));
+                RenderedPart total;
+                try {
+                    total = sc.parallelize(groups, slices)
+                            .mapPartitions(new GroupTask(source, staging, new HadoopConf(conf), probe))
+                            .reduce(RenderedPart::plus);
+                } finally {
+                    source.destroy();
+                }
                 listener.phaseDone("render");
                 if (total.written() == 0) {
                     throw new IOException("no tile of zoom " + job.zooms() + " holds data of " + info.source()

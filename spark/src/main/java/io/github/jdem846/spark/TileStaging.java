@@ -9,6 +9,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.Serializable;
 import java.net.URI;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
@@ -89,21 +90,35 @@ final class TileStaging implements Serializable {
 
     /**
      * Writes one tile: to a temporary name unique to this attempt, then renamed over any earlier attempt's copy.
+     * Local files are written with {@code java.nio} (Hadoop's local file system sets permissions file by file, which
+     * costs more than the tile itself), others through Hadoop.
      */
     void write(EncodedTile tile, Configuration conf, String attempt) throws IOException {
         WebMercatorTile t = tile.tile();
-        Path dir = new Path(new Path(staging, Integer.toString(t.z())), Integer.toString(t.x()));
-        Path done = new Path(dir, t.y() + ".png");
-        Path temp = new Path(dir, "." + t.y() + ".png." + attempt);
+        String rel = t.z() + "/" + t.x() + "/";
+        String name = t.y() + ".png";
+        String temp = "." + name + "." + attempt;
+        Path dir = new Path(staging + "/" + rel);
+        if ("file".equals(dir.toUri().getScheme())) {
+            java.nio.file.Path local = java.nio.file.Path.of(dir.toUri());
+            java.nio.file.Files.createDirectories(local);
+            java.nio.file.Path written = java.nio.file.Files.write(local.resolve(temp), tile.png());
+            java.nio.file.Files.move(written, local.resolve(name), StandardCopyOption.ATOMIC_MOVE,
+                    StandardCopyOption.REPLACE_EXISTING);
+            return;
+        }
+        Path done = new Path(dir, name);
+        Path part = new Path(dir, temp);
         FileSystem fs = fileSystem(done, conf);
-        try (FSDataOutputStream out = fs.create(temp, true)) {
+        try (FSDataOutputStream out = fs.create(part, true)) {
             out.write(tile.png());
         }
-        if (fs.exists(done)) {
+        if (!fs.rename(part, done)) {
+            // an earlier attempt's copy is in the way (Hadoop's rename does not replace): the bytes are the same
             fs.delete(done, false);
-        }
-        if (!fs.rename(temp, done)) {
-            throw new IOException("cannot rename " + temp + " to " + done);
+            if (!fs.rename(part, done)) {
+                throw new IOException("cannot rename " + part + " to " + done);
+            }
         }
     }
 
