@@ -36,3 +36,9 @@ hs vo_horn_az1e6_alt89.99          vo -az 1000000 -alt 89.99
 hs vo_horn_azm720_alt90            vo -az -720 -alt 90
 hs va_horn_az300_alt35_z10         va -az 300 -alt 35 -z 10
 hs va_multidir_alt45_z10           va -multidirectional -z 10
+hs bt_igor_az315                   bt -igor
+hs bt_igor_az100_z3                bt -igor -az 100 -z 3
+hs bt_combined_az315_alt45         bt -combined
+hs bt_combined_az100_alt20_z3      bt -combined -az 100 -alt 20 -z 3
+hs lux_igor_s111120_az315          lux -s 111120 -igor
+hs lux_combined_s111120_az57_alt5_z5 lux -s 111120 -combined -az 57 -alt 5 -z 5

@@ -16,7 +16,7 @@ final class BodyOptions {
 
     @Option(names = "--body", paramLabel = "BODY", converter = Converters.BodyName.class,
             description = "The body the DEM lies on when its CRS names no ellipsoid: earth (default, WGS 84), moon "
-                    + "or mars. Sun positions from --sun-time are for the Earth only.")
+                    + "or mars. A sun by date and time is computed for the Earth only.")
     Body named;
 
     @Option(names = "--radius", paramLabel = "M", converter = Converters.Radius.class,

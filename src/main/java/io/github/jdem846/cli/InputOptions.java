@@ -121,17 +121,41 @@ public final class InputOptions {
         return bodyOptions.body();
     }
 
+    /** What stderr says when no FILE is given. */
+    static final String SAMPLE_NOTE = "no FILE given: rendering the bundled sample, Big Tujunga, California (SRTM 30 m,"
+            + " 600 × 400 cells)";
+
+    /** The FILE arguments as given (empty for none). */
+    List<String> files() {
+        return files == null ? List.of() : List.copyOf(files);
+    }
+
+    /**
+     * Reads {@code inputs} in place of the FILE arguments, for a command whose last FILE arguments are something
+     * else ({@link GdaldemPositionals}). Before {@link #input()} is first called.
+     */
+    void useFiles(List<String> inputs) {
+        if (resolved != null) {
+            throw new IllegalStateException("the FILE arguments are already resolved");
+        }
+        files = List.copyOf(inputs);
+    }
+
     /**
      * The DEM file or files named (directories and glob patterns resolved, once; how they were found is said on
-     * stderr), or {@code null} for the sample.
+     * stderr, and that the bundled sample is drawn when none is named), or {@code null} for the sample.
      */
     DemInput input() throws IOException {
         if (resolved == null) {
             resolved = InputPaths.resolve(command, files);
-            for (String note : resolved.notes()) {
-                command.commandLine().getErr().println("jdem846: note: " + note);
+            java.io.PrintWriter err = command.commandLine().getErr();
+            if (resolved.input() == null) {
+                err.println("jdem846: note: " + SAMPLE_NOTE);
             }
-            command.commandLine().getErr().flush();
+            for (String note : resolved.notes()) {
+                err.println("jdem846: note: " + note);
+            }
+            err.flush();
         }
         return resolved.input();
     }

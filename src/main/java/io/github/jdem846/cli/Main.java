@@ -34,7 +34,8 @@ public final class Main implements Runnable {
             Map.entry("shadows", ShadowsCommand::new),
             Map.entry("tiles", TilesCommand::new),
             Map.entry("info", InfoCommand::new),
-            Map.entry("sun", SunCommand::new));
+            Map.entry("sun", SunCommand::new),
+            Map.entry("completion", picocli.AutoComplete.GenerateCompletion::new));
 
     /** Builds the configured command line with every subcommand (for help and the tests). */
     public static CommandLine commandLine() {
@@ -45,16 +46,19 @@ public final class Main implements Runnable {
      * Builds the command line for these arguments. When they start with the name of a subcommand other than
      * {@code help}, only that subcommand's model is built: picocli reads every command's options by reflection,
      * which is a noticeable part of a one-shot command's start-up (docs/performance.md, "Start-up and class-data
-     * sharing"). Anything else (no arguments, an option, {@code help}, an unknown name) gets all of them, so help
-     * and error messages are unchanged.
+     * sharing"). Anything else (no arguments, an option, {@code help}, {@code completion}, which writes a script
+     * for every command, an unknown name) gets all of them, so help and error messages are unchanged.
      */
     public static CommandLine commandLine(String[] args) {
         CommandLine cl = new CommandLine(new Main());
         String first = args.length > 0 ? args[0] : "";
-        boolean known = SUBCOMMANDS.stream().anyMatch(e -> e.getKey().equals(first) && !first.equals("help"));
+        boolean known = SUBCOMMANDS.stream().anyMatch(e -> e.getKey().equals(first))
+                && !first.equals("help") && !first.equals("completion");
         for (Map.Entry<String, Supplier<Object>> e : SUBCOMMANDS) {
             if (!known || e.getKey().equals(first)) {
-                cl.addSubcommand(e.getKey(), e.getValue().get());
+                // a CommandLine of its own, so that picocli applies the command's model transformer
+                // (GdaldemPositionals.Transformer), which it does when it builds a CommandLine
+                cl.addSubcommand(e.getKey(), new CommandLine(e.getValue().get()));
             }
         }
         CliExceptionHandler handler = new CliExceptionHandler();

@@ -6,8 +6,8 @@ import java.util.Locale;
 
 /**
  * The command line's names of the library's hillshade methods ({@code jdem846}, {@code horn}, {@code
- * multidirectional}) and cast-shadow algorithms ({@code march}, {@code sweep}, {@code exact}, {@code none}), kept
- * here so the core enums carry no CLI spelling.
+ * multidirectional}, {@code combined}, {@code igor}) and cast-shadow algorithms ({@code march}, {@code sweep},
+ * {@code exact}, {@code none}), kept here so the core enums carry no CLI spelling.
  */
 final class MethodNames {
 
@@ -27,7 +27,7 @@ final class MethodNames {
     /** The method named {@code name} (case-insensitive), with a message listing the choices otherwise. */
     static HillshadeMethod hillshade(String name) {
         return named(HillshadeMethod.values(), name, "unknown hillshade method '" + name
-                + "'; choose jdem846 (default), horn or multidirectional");
+                + "'; choose jdem846 (default), horn, multidirectional, combined or igor");
     }
 
     /** The shadow algorithm named {@code name} (case-insensitive), with a message listing the choices otherwise. */

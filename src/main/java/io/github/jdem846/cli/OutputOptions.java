@@ -48,8 +48,13 @@ public final class OutputOptions {
         return options;
     }
 
-    /** The output path. */
+    /** The output path: {@code -o}, or the one named by {@link #use}; null when neither was. */
     Path path() {
         return output;
+    }
+
+    /** Writes to {@code path}, named otherwise than with {@code -o} (gdaldem's positional form). */
+    void use(Path path) {
+        output = path;
     }
 }

@@ -19,7 +19,7 @@ public final class SceneOptions {
 
     @Option(names = "--hillshade", paramLabel = "METHOD", defaultValue = "jdem846",
             converter = Converters.HillshadeOrNone.class,
-            description = "jdem846 (the article's, default), horn, multidirectional or none.")
+            description = "jdem846 (the article's, default), horn, multidirectional, combined, igor or none.")
     HillshadeMethod method;
 
     @Mixin

@@ -24,7 +24,7 @@ public final class ShadowCliOptions {
             description = "sweep: also test each cell's own ray at the steepest terrain of its strip, so that features "
                     + "one or two cells wide (spikes, narrow ridges) cast their whole shadow off the grid axes; "
                     + "1.6-2.5 times the sweep's time. The sweep still spreads such shadows sideways: for lidar "
-                    + "surfaces with poles and trees use --algorithm exact.")
+                    + "surfaces with poles and trees use --shadows exact.")
     boolean thinFeatures;
 
     /** Says on {@code err} when an option given has no effect with {@code algorithm}. */

@@ -35,12 +35,13 @@ public final class SunOptions {
                     + "90° to 108° (civil to astronomical twilight).")
     boolean twilight;
 
-    @Option(names = {"--sun-azimuth", "--azimuth"}, paramLabel = "DEG", converter = Converters.Azimuth.class,
+    @Option(names = {"--sun-azimuth", "--azimuth", "-az"}, paramLabel = "DEG", converter = Converters.Azimuth.class,
             description = "Sun azimuth, degrees clockwise from north: any finite number, reduced to [0, 360). "
                     + "Default: 320.")
     Double azimuth;
 
-    @Option(names = {"--sun-elevation", "--altitude"}, paramLabel = "DEG", converter = Converters.Elevation.class,
+    @Option(names = {"--sun-elevation", "--altitude", "-alt"}, paramLabel = "DEG",
+            converter = Converters.Elevation.class,
             description = "Sun elevation above the horizon in degrees, -90 to 90 (at 0 or below, cast shadows "
                     + "cover every cell). Default: 25.")
     Double elevation;

@@ -21,13 +21,27 @@ public final class TintOptions {
                     + "standard, gray, …), a gdaldem colour file, or 'none'. Default: ${DEFAULT-VALUE}.")
     String tint;
 
-    @Option(names = {"--exact-color", "--exact_color_entry"},
+    @Option(names = {"--exact-color", "--exact_color_entry", "-exact_color_entry"},
             description = "Colour file: only values equal to an entry get its colour (gdaldem -exact_color_entry).")
     boolean exact;
 
-    @Option(names = {"--nearest-color", "--nearest_color_entry"},
+    @Option(names = {"--nearest-color", "--nearest_color_entry", "-nearest_color_entry"},
             description = "Colour file: the nearest entry's colour, no interpolation (gdaldem -nearest_color_entry).")
     boolean nearest;
+
+    /**
+     * Uses {@code nameOrFile}, given in the colour file's place of {@code tint IN COLORFILE OUT}, as
+     * {@code --tint}.
+     *
+     * @throws picocli.CommandLine.ParameterException when {@code --tint} was given too
+     */
+    void usePositional(String nameOrFile) {
+        if (command.commandLine().getParseResult().hasMatchedOption("--tint")) {
+            throw Usage.error(command, "two colour ramps: '" + nameOrFile + "' in the colour file's place (tint IN "
+                    + "COLORFILE OUT) and --tint " + tint + "; give one");
+        }
+        tint = nameOrFile;
+    }
 
     /**
      * The ramp, or {@code null} for 'none'. An unknown name or flags that do not apply are bad usage; a colour file

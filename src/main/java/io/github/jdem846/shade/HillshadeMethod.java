@@ -5,7 +5,7 @@ import io.github.jdem846.internal.Clamp;
 import java.util.Objects;
 
 /**
- * The hillshade methods: jDem846's own (the default) and gdaldem's two. Each makes an {@link IlluminationStage}
+ * The hillshade methods: jDem846's own (the default) and gdaldem's four. Each makes an {@link IlluminationStage}
  * from {@link HillshadeOptions} and maps its illumination to the single-band gray byte of the {@code hillshade}
  * product, where 0 means no-data and 1 … 255 is light.
  */
@@ -70,6 +70,46 @@ public enum HillshadeMethod {
                 return 0;
             }
             return Math.max(1, toByte(1.0 + 254.0 * illumination));
+        }
+    },
+
+    /** gdaldem's {@code -combined} hillshade, {@link CombinedIllumination}; gray = gdaldem's bytes. */
+    COMBINED {
+        @Override
+        public IlluminationStage stage(HillshadeOptions options) {
+            return new CombinedIllumination(options);
+        }
+
+        /** gdaldem: 1 + 254·value, or 1 where value ≤ 0, rounded to the nearest byte like {@link #HORN}. */
+        @Override
+        public int gray(float illumination, HillshadeOptions options) {
+            if (Float.isNaN(illumination)) {
+                return 0;
+            }
+            return illumination <= 0 ? 1 : toByte(1.0 + 254.0 * illumination);
+        }
+    },
+
+    /**
+     * gdaldem's {@code -igor} hillshade, {@link IgorIllumination}: slope and aspect only, the light's elevation
+     * unused; gray = gdaldem's bytes.
+     */
+    IGOR {
+        @Override
+        public IlluminationStage stage(HillshadeOptions options) {
+            return new IgorIllumination(options);
+        }
+
+        /**
+         * gdaldem: 255·value rounded to the nearest byte. Deviation: at least 1, where gdaldem would write 0 (its
+         * no-data) for a slope within 0.2° of vertical facing straight away from the light.
+         */
+        @Override
+        public int gray(float illumination, HillshadeOptions options) {
+            if (Float.isNaN(illumination)) {
+                return 0;
+            }
+            return Math.max(1, toByte(255.0 * illumination));
         }
     };
 

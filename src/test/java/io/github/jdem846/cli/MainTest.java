@@ -10,7 +10,8 @@ import picocli.CommandLine;
 
 class MainTest {
 
-    private static final Set<String> ALL = Set.of("help", "render", "hillshade", "tint", "shadows", "tiles", "info", "sun");
+    private static final Set<String> ALL = Set.of("help", "render", "hillshade", "tint", "shadows", "tiles", "info",
+            "sun", "completion");
 
     @Test
     void aNamedSubcommandBuildsOnlyItsOwnModel() {
@@ -19,10 +20,11 @@ class MainTest {
         assertEquals(Set.of("shadows"), Main.commandLine(new String[] {"shadows"}).getSubcommands().keySet());
     }
 
+    /** Also {@code completion}, whose script covers every command. */
     @Test
     void helpOptionsAndUnknownNamesGetEveryCommand() {
         for (List<String> args : List.of(List.<String>of(), List.of("help", "render"), List.of("--help"),
-                List.of("hillshad"), List.of("--version"))) {
+                List.of("hillshad"), List.of("--version"), List.of("completion"))) {
             assertEquals(ALL, Main.commandLine(args.toArray(String[]::new)).getSubcommands().keySet(),
                     args.toString());
         }

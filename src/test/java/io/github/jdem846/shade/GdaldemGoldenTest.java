@@ -17,8 +17,9 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * Our HORN and MULTIDIRECTIONAL gray bytes against gdaldem 3.6.2's PNGs in testdata/golden/hillshade (made by
- * make_goldens.sh there): within 1 DN everywhere, the same no-data mask, and nearly all bytes exactly equal.
+ * Our HORN, MULTIDIRECTIONAL, COMBINED and IGOR gray bytes against gdaldem 3.6.2's PNGs in
+ * testdata/golden/hillshade (made by make_goldens.sh there): within 1 DN everywhere, the same no-data mask, and
+ * nearly all bytes exactly equal.
  */
 class GdaldemGoldenTest {
 
@@ -42,6 +43,8 @@ class GdaldemGoldenTest {
         String va = TestDems.VANCOUVER;
         HillshadeMethod horn = HillshadeMethod.HORN;
         HillshadeMethod multi = HillshadeMethod.MULTIDIRECTIONAL;
+        HillshadeMethod igor = HillshadeMethod.IGOR;
+        HillshadeMethod combined = HillshadeMethod.COMBINED;
         double metric = Double.NaN;
         return Stream.of(
                 new Case("bt_horn_az315_alt45", bt, 420, 120, 300, 200, horn, 315, 45, 1, metric),
@@ -60,7 +63,13 @@ class GdaldemGoldenTest {
                 new Case("vo_horn_az1e6_alt89.99", vo, 0, 0, 61, 87, horn, 1e6, 89.99, 1, metric),
                 new Case("vo_horn_azm720_alt90", vo, 0, 0, 61, 87, horn, -720, 90, 1, metric),
                 new Case("va_horn_az300_alt35_z10", va, 0, 0, 120, 91, horn, 300, 35, 10, metric),
-                new Case("va_multidir_alt45_z10", va, 0, 0, 120, 91, multi, 315, 45, 10, metric))
+                new Case("va_multidir_alt45_z10", va, 0, 0, 120, 91, multi, 315, 45, 10, metric),
+                new Case("bt_igor_az315", bt, 420, 120, 300, 200, igor, 315, 45, 1, metric),
+                new Case("bt_igor_az100_z3", bt, 420, 120, 300, 200, igor, 100, 45, 3, metric),
+                new Case("bt_combined_az315_alt45", bt, 420, 120, 300, 200, combined, 315, 45, 1, metric),
+                new Case("bt_combined_az100_alt20_z3", bt, 420, 120, 300, 200, combined, 100, 20, 3, metric),
+                new Case("lux_igor_s111120_az315", lux, 0, 0, 95, 90, igor, 315, 45, 1, GDAL_SCALE),
+                new Case("lux_combined_s111120_az57_alt5_z5", lux, 0, 0, 95, 90, combined, 57, 5, 5, GDAL_SCALE))
                 .map(Arguments::of);
     }
 
