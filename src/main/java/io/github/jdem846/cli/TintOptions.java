@@ -18,7 +18,9 @@ public final class TintOptions {
 
     @Option(names = "--tint", paramLabel = "NAME|FILE", defaultValue = ColorRamp.DEFAULT_NAME,
             description = "Colour ramp: a built-in name (hypsometric, hypsometric-natural, bathymetric, etopo1, "
-                    + "standard, gray, …), a gdaldem colour file, or 'none'. Default: ${DEFAULT-VALUE}.")
+                    + "standard, gray, …), a gdaldem colour file, or 'none'. Default: ${DEFAULT-VALUE}: the "
+                    + "article's table 2 (hypsometric), split at 0 m with the bathymetric ramp below when the DEM "
+                    + "holds both land and sea.")
     String tint;
 
     @Option(names = {"--exact-color", "--exact_color_entry", "-exact_color_entry"},

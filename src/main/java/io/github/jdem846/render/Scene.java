@@ -44,8 +44,10 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
     }
 
     /**
-     * The original's defaults: the article's hypsometric tint (table 2), jDem846 hillshade with light multiple 0.75
-     * and intensities 0.75/1.0, no cast shadows, sun at azimuth 320° and elevation 25°, shadow intensity 0.4.
+     * The original's defaults: the article's hypsometric tint (table 2; on a DEM holding land and sea, table 2 above
+     * 0 m and the original's bathymetric ramp below, {@link ColorRamp#defaultRamp()}), jDem846 hillshade with light
+     * multiple 0.75 and intensities 0.75/1.0, no cast shadows, sun at azimuth 320° and elevation 25°, shadow
+     * intensity 0.4.
      *
      * @return the default scene
      */

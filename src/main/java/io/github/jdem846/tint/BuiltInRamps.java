@@ -49,31 +49,35 @@ final class BuiltInRamps {
     }
 
     private static Map<String, ColorRamp> build() {
-        Map<String, ColorRamp> m = new LinkedHashMap<>();
         // The article's table 2 (levels in whole percent, colours as printed).
-        add(m, percent("hypsometric",
+        StopRamp table2 = percent("hypsometric",
                 0, 0x006246, 3, 0x248234, 5, 0xE4CF7E, 18, 0x9A4600,
-                39, 0x7C2123, 52, 0x797979, 68, 0xB2B2B2, 100, 0xE5E5E5));
-        // The original's gradient/hypsometric.json.
-        add(m, percent("hypsometric-original",
-                0, rgb(0, 99, 70), 17.9381, rgb(37, 131, 53), 30.1031, rgb(228, 207, 126), 40, rgb(154, 70, 0),
-                55.0515, rgb(124, 34, 36), 77.9381, rgb(121, 121, 121), 92.9897, rgb(179, 179, 179),
-                100, rgb(230, 230, 230)));
-        // The original's gradient/hypsometric-global.json (table 2 is this, rounded).
-        StopRamp global = percent("hypsometric-global",
-                0, rgb(0, 99, 70), 3.2967, rgb(37, 131, 53), 5.3407, rgb(228, 207, 126), 18.0769, rgb(154, 70, 0),
-                39.3626, rgb(124, 34, 36), 51.6484, rgb(121, 121, 121), 68.1319, rgb(179, 179, 179),
-                100, rgb(230, 230, 230));
-        add(m, global);
-        // The original's gradient/hypsometric-natural.json.
-        add(m, percent("hypsometric-natural",
-                0, rgb(187, 170, 102), 7.7519, rgb(153, 102, 51), 14.3411, rgb(89, 120, 52),
-                31.7829, rgb(102, 102, 51), 68.6046, rgb(68, 68, 51), 100, rgb(195, 195, 195)));
+                39, 0x7C2123, 52, 0x797979, 68, 0xB2B2B2, 100, 0xE5E5E5);
         // The original's gradient/bathymetric.json.
         StopRamp bathymetric = percent("bathymetric",
                 2.5, rgb(24, 23, 54), 6.25, rgb(21, 46, 103), 12.5, rgb(21, 87, 135), 25, rgb(21, 138, 171),
                 37.5, rgb(27, 155, 184), 50, rgb(11, 176, 203), 62.5, rgb(55, 186, 216), 75, rgb(95, 194, 217),
                 87.5, rgb(134, 205, 211), 100, rgb(175, 218, 209));
+        // The original's gradient/hypsometric-global.json (table 2 is this, rounded).
+        StopRamp global = percent("hypsometric-global",
+                0, rgb(0, 99, 70), 3.2967, rgb(37, 131, 53), 5.3407, rgb(228, 207, 126), 18.0769, rgb(154, 70, 0),
+                39.3626, rgb(124, 34, 36), 51.6484, rgb(121, 121, 121), 68.1319, rgb(179, 179, 179),
+                100, rgb(230, 230, 230));
+
+        Map<String, ColorRamp> m = new LinkedHashMap<>();
+        // The default: table 2, split at 0 m with bathymetric below when the DEM holds land and sea.
+        add(m, new TopoBathyRamp(ColorRamp.DEFAULT_NAME, table2, bathymetric));
+        add(m, table2);
+        // The original's gradient/hypsometric.json.
+        add(m, percent("hypsometric-original",
+                0, rgb(0, 99, 70), 17.9381, rgb(37, 131, 53), 30.1031, rgb(228, 207, 126), 40, rgb(154, 70, 0),
+                55.0515, rgb(124, 34, 36), 77.9381, rgb(121, 121, 121), 92.9897, rgb(179, 179, 179),
+                100, rgb(230, 230, 230)));
+        add(m, global);
+        // The original's gradient/hypsometric-natural.json.
+        add(m, percent("hypsometric-natural",
+                0, rgb(187, 170, 102), 7.7519, rgb(153, 102, 51), 14.3411, rgb(89, 120, 52),
+                31.7829, rgb(102, 102, 51), 68.6046, rgb(68, 68, 51), 100, rgb(195, 195, 195)));
         add(m, bathymetric);
         add(m, etopo1());
         // The original's default (StandardModelColoring): global above 0 m, bathymetric at and below.

@@ -11,19 +11,23 @@ import java.util.List;
  * by percent of a DEM's range (eq. 1–3) or by elevation. {@link #bind} fixes the range of one DEM and gives the
  * fast {@link TintFunction} that the renderer calls per cell.
  *
- * <p>Get one by name ({@link #named}: {@code hypsometric}, the default, {@code etopo1}, {@code standard}, …), from
- * a {@code gdaldem color-relief} colour file ({@link #fromGdalColorFile}), or build a {@link StopRamp} from
- * {@link ColorStop}s.
+ * <p>Get one by name ({@link #named}: {@code hypsometric-bathymetric}, the default, {@code hypsometric},
+ * {@code etopo1}, {@code standard}, …), from a {@code gdaldem color-relief} colour file ({@link #fromGdalColorFile}),
+ * or build a {@link StopRamp} from {@link ColorStop}s.
  *
  * <pre>{@code
  * TintFunction tint = ColorRamp.named("hypsometric").bind(dem.statistics());
  * int argb = tint.argb(dem.get(col, row));
  * }</pre>
  */
-public sealed interface ColorRamp permits StopRamp, SeaLandRamp {
+public sealed interface ColorRamp permits StopRamp, SeaLandRamp, TopoBathyRamp {
 
-    /** The name of the default ramp, {@code hypsometric} (the article's table 2). */
-    String DEFAULT_NAME = "hypsometric";
+    /**
+     * The name of the default ramp, {@code hypsometric-bathymetric}: the article's table 2 ({@code hypsometric})
+     * over [min, max], or, for a DEM holding both land and sea (min &lt; 0 &lt; max), table 2 over [0, max] and the
+     * original's {@code bathymetric} over [min, 0] (a {@link TopoBathyRamp}).
+     */
+    String DEFAULT_NAME = "hypsometric-bathymetric";
 
     /** @return a short name for messages (the built-in name, or the colour file's name) */
     String name();
@@ -70,7 +74,7 @@ public sealed interface ColorRamp permits StopRamp, SeaLandRamp {
         return BuiltInRamps.names();
     }
 
-    /** @return the default ramp, {@code hypsometric} */
+    /** @return the default ramp, {@code hypsometric-bathymetric} (see {@link #DEFAULT_NAME}) */
     static ColorRamp defaultRamp() {
         return named(DEFAULT_NAME);
     }

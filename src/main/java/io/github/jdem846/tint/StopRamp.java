@@ -8,7 +8,8 @@ import java.util.Objects;
 import java.util.function.ToDoubleFunction;
 
 /**
- * A colour ramp given by stops: the built-in ramps other than {@code standard}, and every colour file.
+ * A colour ramp given by stops: the built-in ramps other than {@code hypsometric-bathymetric} and {@code standard},
+ * and every colour file.
  *
  * <p>Stops may be listed in any order and may mix units (a colour file can); binding places each stop on the
  * DEM's range and sorts them by position, keeping the listed order of stops at the same position (a hard step:

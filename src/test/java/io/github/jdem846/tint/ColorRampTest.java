@@ -237,7 +237,8 @@ class ColorRampTest {
             for (String name : ColorRamp.names()) {
                 ColorRamp ramp = ColorRamp.named(name);
                 TintFunction fast = ramp.bind(r);
-                TintFunction exact = ramp instanceof StopRamp s ? s.bindExact(r) : ((SeaLandRamp) ramp).bindExact(r);
+                TintFunction exact = ramp instanceof StopRamp s ? s.bindExact(r)
+                        : ramp instanceof TopoBathyRamp t ? t.bindExact(r) : ((SeaLandRamp) ramp).bindExact(r);
                 for (int e = (int) r.min() - 3; e <= r.max() + 3; e++) {
                     assertEquals(exact.argb(e), fast.argb(e), name + " at " + e);
                 }
@@ -256,8 +257,9 @@ class ColorRampTest {
 
     @Test
     void namesAreCaseInsensitiveWithAliases() {
-        assertEquals("hypsometric", ColorRamp.names().get(0));
-        assertSame(ColorRamp.named("hypsometric"), ColorRamp.defaultRamp());
+        assertEquals("hypsometric-bathymetric", ColorRamp.names().get(0));
+        assertSame(ColorRamp.named("hypsometric-bathymetric"), ColorRamp.defaultRamp());
+        assertSame(ColorRamp.defaultRamp(), ColorRamp.named(" Hypsometric_Bathymetric"));
         assertSame(ColorRamp.named("hypsometric-natural"), ColorRamp.named(" Hypsometric_NATURAL "));
         assertSame(ColorRamp.named("standard"), ColorRamp.named("standard-coloring"));
         assertSame(ColorRamp.named("hypsometric-original"), ColorRamp.named("hypsometric-tint"));
