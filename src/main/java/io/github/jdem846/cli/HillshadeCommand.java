@@ -57,6 +57,9 @@ public final class HillshadeCommand implements Callable<Integer> {
     ShadingOptions shading;
 
     @Mixin
+    MapScaleOption mapScale;
+
+    @Mixin
     SunOptions sun;
 
     @Mixin
@@ -82,6 +85,7 @@ public final class HillshadeCommand implements Callable<Integer> {
         }
         Scene scene = Scene.defaults().withHillshade(chosen).withHillshadeOptions(shading.options());
         ReliefJob job = input.job(Product.HILLSHADE).withScene(scene).withSun(sun.sun())
+                .withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
         return new JobRunner(spec, input, output, execution, verbose).run(job, sun.time());
     }

@@ -3,6 +3,8 @@ package io.github.jdem846.cli;
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.LatLonBox;
 import io.github.jdem846.io.DemInfo;
+import io.github.jdem846.job.MercatorScale;
+import io.github.jdem846.job.ScaleNotice;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.raster.PixelAnchor;
@@ -104,9 +106,7 @@ final class InfoReport {
         for (String n : info.notices()) {
             line(sb, "Notice", n);
         }
-        for (String n : io.github.jdem846.job.ScaleNotice.of(g).stream().toList()) {
-            line(sb, "Notice", n);
-        }
+        ScaleNotice.of(MercatorScale.GROUND.apply(g)).ifPresent(n -> line(sb, "Notice", n));
         return sb.toString().stripTrailing();
     }
 

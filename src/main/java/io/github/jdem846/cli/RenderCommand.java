@@ -28,6 +28,9 @@ public final class RenderCommand implements Callable<Integer> {
     SceneOptions sceneOptions;
 
     @Mixin
+    MapScaleOption mapScale;
+
+    @Mixin
     SunOptions sun;
 
     @Mixin
@@ -45,6 +48,7 @@ public final class RenderCommand implements Callable<Integer> {
         sun.requireConsistent(input.bodyOptions);
         sceneOptions.noteUnused(spec.commandLine().getErr());
         ReliefJob job = input.job(Product.RELIEF).withScene(sceneOptions.scene()).withSun(sun.sun())
+                .withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
         return new JobRunner(spec, input, output, execution, verbose).run(job, sun.time());
     }

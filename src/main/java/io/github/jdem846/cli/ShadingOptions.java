@@ -39,7 +39,7 @@ public final class ShadingOptions {
     @Option(names = {"-s", "--xy-scale"}, paramLabel = "UNITS_TO_METRES", converter = Converters.XyScale.class,
             description = "Like gdaldem -s: horizontal cell size = CRS units × this (e.g. 111120 for degrees); a "
                     + "finite number above 0. Default: the true metric cell size from the CRS, per row for lat/lon "
-                    + "grids.")
+                    + "and Web Mercator grids.")
     Double xyScale;
 
     /** The options record. */

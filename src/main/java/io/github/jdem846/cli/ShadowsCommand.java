@@ -36,6 +36,9 @@ public final class ShadowsCommand implements Callable<Integer> {
     ShadowCliOptions shadowOptions;
 
     @Mixin
+    MapScaleOption mapScale;
+
+    @Mixin
     SunOptions sun;
 
     @Mixin
@@ -54,6 +57,7 @@ public final class ShadowsCommand implements Callable<Integer> {
         shadowOptions.noteUnused(algorithm, spec.commandLine().getErr());
         Scene scene = Scene.defaults().withShadows(algorithm).withShadowOptions(shadowOptions.options());
         ReliefJob job = input.job(Product.SHADOWS).withScene(scene).withSun(sun.sun())
+                .withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
         return new JobRunner(spec, input, output, execution, verbose).run(job, sun.time());
     }

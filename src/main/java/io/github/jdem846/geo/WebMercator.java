@@ -1,5 +1,12 @@
 package io.github.jdem846.geo;
 
+import java.util.Locale;
+import org.apache.sis.measure.Units;
+import org.opengis.parameter.GeneralParameterValue;
+import org.opengis.parameter.ParameterValue;
+import org.opengis.referencing.crs.ProjectedCRS;
+import org.opengis.referencing.operation.Conversion;
+
 /**
  * Web Mercator (EPSG:3857, "WGS 84 / Pseudo-Mercator"), the projection of web-map tiles: WGS 84 longitude and
  * latitude put through the spherical Mercator formulas on a sphere of radius {@value #RADIUS} m, x east and y north
@@ -56,12 +63,51 @@ public final class WebMercator {
     }
 
     /**
-     * True for a projected CRS that is Web Mercator: EPSG 3857 (or its older codes 3785 and 900913, or ESRI's
-     * 102100 and 102113).
+     * True for a projected CRS in metres that is Web Mercator: EPSG 3857 (or its older codes 3785 and 900913, or
+     * ESRI's 102100 and 102113), or, without a code, an Apache SIS definition of it under another name: EPSG's
+     * "Popular Visualisation Pseudo Mercator" method, or ESRI's {@code Mercator_Auxiliary_Sphere} with
+     * {@code Auxiliary_Sphere_Type} 0 (what GDAL writes in an ESRI {@code .prj} for EPSG:3857), every other
+     * parameter 0, on an ellipsoid of semi-major axis {@value #RADIUS} m.
      */
     public static boolean isWebMercator(CrsInfo crs) {
+        if (crs.kind() != CrsInfo.Kind.PROJECTED || crs.linearUnitMeters() != 1.0) {
+            return false;
+        }
         Integer code = crs.epsg();
-        return crs.kind() == CrsInfo.Kind.PROJECTED && code != null && crs.linearUnitMeters() == 1.0
-                && (code == EPSG || code == 3785 || code == 900913 || code == 102100 || code == 102113);
+        if (code != null) {
+            return code == EPSG || code == 3785 || code == 900913 || code == 102100 || code == 102113;
+        }
+        return crs.sisCrs() instanceof ProjectedCRS p && definesWebMercator(p);
+    }
+
+    /** True when {@code p}'s projection is Web Mercator under another name (see {@link #isWebMercator}). */
+    private static boolean definesWebMercator(ProjectedCRS p) {
+        Conversion conversion = p.getConversionFromBase();
+        if (conversion == null || p.getDatum() == null
+                || p.getDatum().getEllipsoid().getSemiMajorAxis() != RADIUS
+                || !p.getDatum().getEllipsoid().getAxisUnit().equals(Units.METRE)) {
+            return false;
+        }
+        String method = conversion.getMethod().getName().getCode().replaceAll("[^A-Za-z]", "")
+                .toLowerCase(Locale.ROOT);
+        boolean auxiliarySphere = method.equals("mercatorauxiliarysphere");
+        if (!auxiliarySphere && !method.equals("popularvisualisationpseudomercator")) {
+            return false;
+        }
+        try {
+            for (GeneralParameterValue value : conversion.getParameterValues().values()) {
+                if (!(value instanceof ParameterValue<?> v)) {
+                    return false;
+                }
+                String name = v.getDescriptor().getName().getCode();
+                boolean axis = name.equals("semi_major") || name.equals("semi_minor");
+                if (!axis && v.doubleValue() != 0) {
+                    return false;   // Auxiliary_Sphere_Type 1 to 3, an origin, a false easting or northing
+                }
+            }
+        } catch (RuntimeException notANumber) {
+            return false;
+        }
+        return true;
     }
 }

@@ -204,7 +204,7 @@ final class DemLoader {
         DemInfo info = plan.info();
         LoadedDem loaded = DemReader.load(file, new ReadRequest(read, plan.decimation()));
         Dem read0 = loaded.dem();
-        Dem onBody = read0.withGeometry(read0.geometry().withDefaultEllipsoid(plan.body()));
+        Dem onBody = read0.withGeometry(plan.measured(read0.geometry().withDefaultEllipsoid(plan.body())));
         Dem dem = DemResampler.resample(onBody, plan.gridWidth(), plan.gridHeight());
         ElevationStatistics stats = null;
         if (fileStatistics) {

@@ -81,6 +81,17 @@ record PicturePlan(DemInfo info, Ellipsoid body, Window.Cells window, Window.Cel
         return resampled() ? DemResampler.resampledGeometry(g, gridWidth, gridHeight) : g;
     }
 
+    /**
+     * A geometry read from the file, measured as the plan's header is: with ground cell sizes when the header has
+     * them ({@link MercatorScale#GROUND}).
+     *
+     * @param g a geometry of the file's cells as the reader gives it
+     * @return {@code g}, with ground cell sizes if the plan measures cells on the ground
+     */
+    GridGeometry measured(GridGeometry g) {
+        return info.geometry().hasGroundCellSizes() && !g.hasGroundCellSizes() ? g.withGroundCellSizes() : g;
+    }
+
     /** @return the geometry of the picture: the grid's, cut to {@link #area} */
     GridGeometry pictureGeometry() {
         return gridGeometry().window(area.col(), area.row(), area.width(), area.height());

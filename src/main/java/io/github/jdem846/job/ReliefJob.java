@@ -58,13 +58,15 @@ import java.util.Objects;
  * @param sun       the light
  * @param body      the body a DEM whose file names no ellipsoid lies on (metric cell sizes, the sun by date and
  *                  time)
+ * @param mercatorScale how the cells of a Web Mercator DEM are measured for slopes and shadow lengths: on the
+ *                  ground row by row ({@link MercatorScale#GROUND}, the default) or in the projection's metres
  * @param execution threads and tile size; the result does not depend on them
  * @param memory    the most heap bytes the job's grids, layers and pictures may take at once, or 0 for half the
  *                  heap's maximum ({@link #memoryBudget()}): {@link #runAndWrite} renders a picture that needs more
  *                  in tiles (docs/scale.md); the result does not depend on it
  */
 public record ReliefJob(DemInput input, Product product, Scene scene, Window window, OutputSize size, Sun sun,
-                        Body body, RenderSettings execution, long memory) {
+                        Body body, MercatorScale mercatorScale, RenderSettings execution, long memory) {
 
     public ReliefJob {
         Objects.requireNonNull(product, "product");
@@ -72,6 +74,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         Objects.requireNonNull(size, "size");
         Objects.requireNonNull(sun, "sun");
         Objects.requireNonNull(body, "body");
+        Objects.requireNonNull(mercatorScale, "mercatorScale");
         Objects.requireNonNull(execution, "execution");
         if (memory < 0) {
             throw new IllegalArgumentException("a memory budget must be a number of bytes ≥ 0 (0 = half the heap),"
@@ -80,7 +83,26 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     }
 
     /**
-     * A job with the automatic memory budget (half the heap's maximum).
+     * A job that measures Web Mercator cells on the ground ({@link MercatorScale#GROUND}).
+     *
+     * @param input     the DEM file or files, or {@code null} for the bundled sample DEM
+     * @param product   what to make
+     * @param scene     the stages and their settings
+     * @param window    the part of the DEM to draw, or {@code null} for all of it
+     * @param size      the picture's size
+     * @param sun       the light
+     * @param body      the body a DEM whose file names no ellipsoid lies on
+     * @param execution threads and tile size
+     * @param memory    the memory budget in bytes, or 0 for half the heap's maximum
+     */
+    public ReliefJob(DemInput input, Product product, Scene scene, Window window, OutputSize size, Sun sun,
+                     Body body, RenderSettings execution, long memory) {
+        this(input, product, scene, window, size, sun, body, MercatorScale.GROUND, execution, memory);
+    }
+
+    /**
+     * A job with the automatic memory budget (half the heap's maximum) that measures Web Mercator cells on the
+     * ground.
      *
      * @param input     the DEM file or files, or {@code null} for the bundled sample DEM
      * @param product   what to make
@@ -115,7 +137,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      */
     public static ReliefJob of(DemInput dem) {
         return new ReliefJob(dem, Product.RELIEF, Scene.defaults(), null, OutputSize.FULL, Sun.ORIGINAL_DEFAULT,
-                Body.EARTH, RenderSettings.defaults(), 0);
+                Body.EARTH, MercatorScale.GROUND, RenderSettings.defaults(), 0);
     }
 
     /**
@@ -134,7 +156,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withProduct(Product value) {
-        return new ReliefJob(input, value, scene, window, size, sun, body, execution, memory);
+        return new ReliefJob(input, value, scene, window, size, sun, body, mercatorScale, execution, memory);
     }
 
     /**
@@ -144,7 +166,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withScene(Scene value) {
-        return new ReliefJob(input, product, value, window, size, sun, body, execution, memory);
+        return new ReliefJob(input, product, value, window, size, sun, body, mercatorScale, execution, memory);
     }
 
     /**
@@ -154,7 +176,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withWindow(Window value) {
-        return new ReliefJob(input, product, scene, value, size, sun, body, execution, memory);
+        return new ReliefJob(input, product, scene, value, size, sun, body, mercatorScale, execution, memory);
     }
 
     /**
@@ -164,7 +186,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withSize(OutputSize value) {
-        return new ReliefJob(input, product, scene, window, value, sun, body, execution, memory);
+        return new ReliefJob(input, product, scene, window, value, sun, body, mercatorScale, execution, memory);
     }
 
     /**
@@ -174,7 +196,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withSun(Sun value) {
-        return new ReliefJob(input, product, scene, window, size, value, body, execution, memory);
+        return new ReliefJob(input, product, scene, window, size, value, body, mercatorScale, execution, memory);
     }
 
     /**
@@ -184,7 +206,18 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withBody(Body value) {
-        return new ReliefJob(input, product, scene, window, size, sun, value, execution, memory);
+        return new ReliefJob(input, product, scene, window, size, sun, value, mercatorScale, execution, memory);
+    }
+
+    /**
+     * A copy with another {@code mercatorScale}: {@link MercatorScale#MAP} measures a Web Mercator DEM's cells in
+     * the projection's metres, as gdaldem does, instead of on the ground.
+     *
+     * @param value how the cells of a Web Mercator DEM are measured
+     * @return the new job
+     */
+    public ReliefJob withMercatorScale(MercatorScale value) {
+        return new ReliefJob(input, product, scene, window, size, sun, body, value, execution, memory);
     }
 
     /**
@@ -194,7 +227,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withExecution(RenderSettings value) {
-        return new ReliefJob(input, product, scene, window, size, sun, body, value, memory);
+        return new ReliefJob(input, product, scene, window, size, sun, body, mercatorScale, value, memory);
     }
 
     /**
@@ -204,7 +237,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * @return the new job
      */
     public ReliefJob withMemory(long bytes) {
-        return new ReliefJob(input, product, scene, window, size, sun, body, execution, bytes);
+        return new ReliefJob(input, product, scene, window, size, sun, body, mercatorScale, execution, bytes);
     }
 
     /**
@@ -245,7 +278,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
 
     /**
      * Renders the product of the whole of {@code dem}, a grid already in memory ({@link #input()} is not read):
-     * the tint spans the grid's own range and no halo is needed.
+     * the tint spans the grid's own range and no halo is needed; a Web Mercator grid is measured as {@link
+     * #mercatorScale()} says, as one read from a file.
      *
      * @throws IllegalArgumentException when the job has a window or a size other than {@link OutputSize#FULL}
      *                                  (crop or resample the grid first: {@link Dem#crop}, {@link
@@ -264,9 +298,10 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         }
         Scene s = productScene();
         CellWindow whole = CellWindow.whole(dem.width(), dem.height());
-        Sun.Lighting lighting = lighting(dem.geometry(), listener);
+        Dem measured = dem.withGeometry(mercatorScale.apply(dem.geometry()));
+        Sun.Lighting lighting = lighting(measured.geometry(), listener);
         AreaRenderer renderer = new AreaRenderer(product, s, lighting, execution);
-        return result(null, dem.geometry(), renderer.render(dem, whole, 0, 0, listener), lighting, listener);
+        return result(null, dem.geometry(), renderer.render(measured, whole, 0, 0, listener), lighting, listener);
     }
 
     /**
@@ -357,7 +392,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         if (s.hasShadows()) {
             halo = halo.union(shadowHalo(s));
         }
-        DemInfo info = DemReader.inspect(files).withDefaultEllipsoid(body.ellipsoid());
+        DemInfo read = DemReader.inspect(files).withDefaultEllipsoid(body.ellipsoid());
+        DemInfo info = read.withGeometry(mercatorScale.apply(read.geometry()));
         DemLoader.StreamedStatistics statistics = new DemLoader.StreamedStatistics(files);
         return new Planned(DemLoader.plan(info, body.ellipsoid(), window, size, halo, statistics), statistics);
     }
@@ -387,7 +423,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         for (String notice : loaded.info().notices()) {
             listener.notice(notice);
         }
-        ScaleNotice.of(loaded.info().geometry()).ifPresent(listener::notice);
+        ScaleNotice.of(planned.plan().info().geometry(), s).ifPresent(listener::notice);
         Scene scene = forWholeFile(s, loaded.fileStatistics());
         CellWindow area = loaded.area();
         Sun.Lighting lighting = lighting(planned.plan().pictureGeometry(), listener);
@@ -406,7 +442,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         ElevationStatistics statistics = needsStatistics(s) ? planned.statistics().get() : null;
         listener.phaseDone("read");
         List<String> notices = new ArrayList<>(plan.info().notices());
-        ScaleNotice.of(plan.info().geometry()).ifPresent(notices::add);
+        ScaleNotice.of(plan.info().geometry(), s).ifPresent(notices::add);
         Scene scene = forWholeFile(s, statistics);
         GridGeometry picture = plan.pictureGeometry();
         Sun.Lighting lighting = lighting(picture, listener);

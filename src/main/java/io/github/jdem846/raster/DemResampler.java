@@ -38,13 +38,14 @@ public final class DemResampler {
      * @param g      the grid before resampling
      * @param width  columns after, ≥ 1
      * @param height rows after, ≥ 1
-     * @return the new grid's geometry, a root grid of its own
+     * @return the new grid's geometry, a root grid of its own, with ground cell sizes when {@code g} has them
      */
     public static GridGeometry resampledGeometry(GridGeometry g, int width, int height) {
         double sx = (double) g.width() / width;
         double sy = (double) g.height() / height;
-        return new GridGeometry(width, height, g.originX(), g.originY(), g.cellWidth() * sx, g.cellHeight() * sy,
-                g.crs(), g.declaredAnchor());
+        GridGeometry resampled = new GridGeometry(width, height, g.originX(), g.originY(), g.cellWidth() * sx,
+                g.cellHeight() * sy, g.crs(), g.declaredAnchor());
+        return g.hasGroundCellSizes() ? resampled.withGroundCellSizes() : resampled;
     }
 
     /**

@@ -222,7 +222,8 @@ class GdaldemHabitsTest {
             assertTrue(list.replaceAll("\\s+", " ").contains(command.equals("tint") ? "IN... COLORFILE OUT"
                     : "IN... OUT"), list);
         }
-        assertTrue(run(0, "render", "--help").out().contains(" -o=OUT "), "render still needs -o");
+        assertTrue(run(0, "render", "--help").out().replaceAll("\\s+", " ").contains(" -o=OUT "),
+                "render still needs -o");
         assertTrue(run(2, "render", LUX).err().contains("Missing required option: '--output=OUT'"));
     }
 

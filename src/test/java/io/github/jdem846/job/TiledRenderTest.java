@@ -45,6 +45,7 @@ class TiledRenderTest {
     static final Path TUJUNGA = Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.flt");
     static final Path JACKSBORO = Path.of("testdata/dem/jacksboro_srtm3s_wgs84.flt");
     static final Path JACKSBORO_TIF = Path.of("testdata/dem/jacksboro_srtm3s_wgs84.tif");
+    static final Path VANCOUVER = Path.of("testdata/dem/vancouver-island_topobathy_2min_mercator.flt");
     private static final RenderSettings TWO_THREADS = new RenderSettings(2, 64);
     private static final WriteOptions NO_SIDECARS = WriteOptions.defaults()
             .withSidecars(WriteOptions.Sidecars.NONE);
@@ -194,6 +195,21 @@ class TiledRenderTest {
         List<String> notices = assertTiledEqualsInMemory("low.png", low, 700_000, CHOSEN, 4);
         assertTrue(notices.toString().contains("tiles of up to 403×"), "bands: " + notices);
         assertTiledEqualsInMemory("low-columns.png", low.withProduct(Product.SHADOWS), 1, forced(8, 6), 16);
+    }
+
+    @Test
+    void aWebMercatorGridMeasuredOnTheGroundRendersInTilesAsInMemory() throws Exception {
+        // ground cell sizes row by row (MercatorScale.GROUND): the halo toward a low sun, the sweep's lines and the
+        // normals of every tile must use the sizes of the whole picture's rows, at full size, enlarged, reduced
+        ReliefJob low = ReliefJob.of(VANCOUVER).withScene(sweep()).withSun(Sun.fixed(300, 4));
+        List<String> notices = assertTiledEqualsInMemory("vancouver.png", low, 1, forced(2, 2), 9);
+        assertTrue(notices.stream().anyMatch(n -> n.startsWith("Web Mercator grid: slopes and shadow lengths use "
+                + "the cells' ground size")), notices.toString());
+        assertTiledEqualsInMemory("vancouver-x3.png", low.withSize(OutputSize.scale(3)), 1, forced(6, 5), 12);
+        assertTiledEqualsInMemory("vancouver-window.png", low.withProduct(Product.SHADOWS)
+                .withWindow(Window.cells(10, 20, 90, 60)).withSize(OutputSize.width(70)), 1, forced(1, 1), 9);
+        assertTiledEqualsInMemory("vancouver-hs.tif", low.withProduct(Product.HILLSHADE)
+                .withScene(Scene.defaults().withHillshade(HillshadeMethod.HORN)), 1, forced(2, 1), 8);
     }
 
     @Test
