@@ -31,6 +31,8 @@ module io.github.jdem846 {
     requires transitive org.apache.sis.referencing;
     // GDAL_METADATA and .aux.xml
     requires java.xml;
+    // quieting Apache SIS's java.util.logging warnings (internal.SisLoggers)
+    requires java.logging;
     // GeoTIFF decoding (automatic modules, named by their Automatic-Module-Name; the reader's superclass is in core)
     requires com.twelvemonkeys.imageio.tiff;
     requires com.twelvemonkeys.imageio.core;

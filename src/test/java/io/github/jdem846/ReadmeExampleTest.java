@@ -1,6 +1,7 @@
 package io.github.jdem846;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.io.DemReader;
@@ -42,7 +43,7 @@ class ReadmeExampleTest {
         assertTrue(reports.get() > 0);
         BufferedImage back = ImageIO.read(dir.resolve("relief.png").toFile());
         assertEquals(picture.getRGB(10, 10), back.getRGB(10, 10));
-        assertTrue(Files.exists(dir.resolve("relief.pgw")), "PNG gets a world file by default");
+        assertFalse(Files.exists(dir.resolve("relief.pgw")), "no sidecars by default, as the CLI");
         // etopo1 colours the sea blue and the land green/brown: the deepest cell is bluer than it is red
         int deep = picture.getRGB(indexOfMin(dem) % dem.width(), indexOfMin(dem) / dem.width());
         assertTrue((deep & 0xff) > ((deep >> 16) & 0xff), Integer.toHexString(deep));

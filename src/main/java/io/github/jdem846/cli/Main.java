@@ -69,9 +69,7 @@ public final class Main implements Runnable {
     }
 
     public static void main(String[] args) {
-        if (!java.util.Arrays.asList(args).contains("--verbose")) {
-            quietLibraryLogs();
-        }
+        configureLibraryLogs(java.util.Arrays.asList(args).contains("--verbose"));
         InputWarmUp.start(args);
         System.exit(execute(commandLine(args), args));
     }
@@ -106,13 +104,15 @@ public final class Main implements Runnable {
 
     /**
      * Apache SIS reports through java.util.logging (e.g. "SIS_DATA is not set", WKT elements it ignores); what
-     * matters of that reaches the user as our own notices, so the CLI shows SIS's records only with --verbose.
-     * Done through the LogManager's configuration, which also holds for loggers created later.
+     * matters of that reaches the user as our own notices, so the CLI shows SIS's records only with --verbose
+     * (level INFO, which also keeps the library from quieting them, see internal.SisLoggers). Done through the
+     * LogManager's configuration, which also holds for loggers created later.
      */
-    private static void quietLibraryLogs() {
+    private static void configureLibraryLogs(boolean verbose) {
+        String level = verbose ? "INFO" : "OFF";
         try {
             java.util.logging.LogManager.getLogManager().updateConfiguration(
-                    new java.io.ByteArrayInputStream("org.apache.sis.level = OFF\n".getBytes(
+                    new java.io.ByteArrayInputStream(("org.apache.sis.level = " + level + "\n").getBytes(
                             java.nio.charset.StandardCharsets.ISO_8859_1)),
                     key -> (old, now) -> now != null ? now : old);
         } catch (java.io.IOException e) {

@@ -1,5 +1,6 @@
 package io.github.jdem846.geo;
 
+import io.github.jdem846.internal.SisLoggers;
 import java.util.Optional;
 import javax.measure.Unit;
 import javax.measure.UnitConverter;
@@ -35,6 +36,10 @@ import org.opengis.util.FactoryException;
  * is the order of grid x and y, whatever order the EPSG definition uses.
  */
 public final class CrsResolver {
+
+    static {
+        SisLoggers.quiet(); // SIS's routine warnings off stderr, unless the application configured them
+    }
 
     private CrsResolver() {
     }

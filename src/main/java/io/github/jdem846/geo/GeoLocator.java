@@ -1,5 +1,6 @@
 package io.github.jdem846.geo;
 
+import io.github.jdem846.internal.SisLoggers;
 import java.util.Objects;
 import java.util.Optional;
 import org.apache.sis.referencing.CRS;
@@ -27,6 +28,10 @@ public final class GeoLocator {
 
     private final MathTransform toLonLat; // null = identity (geographic)
     private volatile MathTransform fromLonLat; // its inverse, built on first use
+
+    static {
+        SisLoggers.quiet(); // SIS's routine warnings off stderr, unless the application configured them
+    }
 
     private GeoLocator(MathTransform toLonLat) {
         this.toLonLat = toLonLat;

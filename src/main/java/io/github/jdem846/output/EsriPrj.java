@@ -1,5 +1,6 @@
 package io.github.jdem846.output;
 
+import io.github.jdem846.internal.SisLoggers;
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.CrsResolver;
 import java.time.ZoneOffset;
@@ -14,6 +15,10 @@ import org.opengis.referencing.crs.CoordinateReferenceSystem;
  * software and GDAL read (angular units in degrees, {@link Convention#WKT1_COMMON_UNITS}), formatted by Apache SIS.
  */
 final class EsriPrj {
+
+    static {
+        SisLoggers.quiet(); // SIS's routine warnings off stderr, unless the application configured them
+    }
 
     private EsriPrj() {
     }

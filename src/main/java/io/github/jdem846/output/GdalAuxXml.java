@@ -1,5 +1,6 @@
 package io.github.jdem846.output;
 
+import io.github.jdem846.internal.SisLoggers;
 import org.opengis.referencing.crs.CoordinateReferenceSystem;
 import org.opengis.referencing.cs.AxisDirection;
 import org.opengis.referencing.cs.CoordinateSystem;
@@ -10,6 +11,10 @@ import org.opengis.referencing.cs.CoordinateSystem;
  * only ESRI-style readers use.
  */
 final class GdalAuxXml {
+
+    static {
+        SisLoggers.quiet(); // SIS's routine warnings off stderr, unless the application configured them
+    }
 
     private GdalAuxXml() {
     }

@@ -6,7 +6,9 @@ import java.util.Objects;
  * How {@link ImageOutput} writes a file. Immutable; start from {@link #defaults()} and change with the
  * {@code with…} methods.
  *
- * @param sidecars            when to write a world file, a {@code .prj} and a GDAL {@code .aux.xml} next to the image
+ * @param sidecars            when to write a world file, a {@code .prj} and a GDAL {@code .aux.xml} next to the image;
+ *                            by default never (a GeoTIFF embeds its georeferencing), as the CLI without
+ *                            {@code --world-file}
  * @param worldFileNaming     {@code .pgw}/{@code .tfw} or the generic {@code .wld}
  * @param noData              the value marked as no-data in a GeoTIFF (GDAL_NODATA tag), or {@code null} for none;
  *                            for 8-bit products an integer 0..255 (0 for hillshades), for float32 any value or NaN.
@@ -32,7 +34,7 @@ public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, D
         WHEN_NOT_EMBEDDED,
         /** Always, also next to a GeoTIFF (for software that reads only world files). */
         ALWAYS,
-        /** Never. */
+        /** Never: the default. */
         NONE
     }
 
@@ -71,11 +73,11 @@ public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, D
     }
 
     /**
-     * Sidecars when not embedded, {@code .pgw}/{@code .tfw} naming, no no-data tag, PNG level 1, parallel, GeoTIFF
-     * strips (COG tiles of 512).
+     * No sidecars (ask for them with {@link #withSidecars}), {@code .pgw}/{@code .tfw} naming, no no-data tag, PNG
+     * level 1, parallel, GeoTIFF strips (COG tiles of 512): the files the CLI writes without {@code --world-file}.
      */
     public static WriteOptions defaults() {
-        return new WriteOptions(Sidecars.WHEN_NOT_EMBEDDED, WorldFileNaming.FORMAT, null, 1, true, TiffLayout.STRIPS,
+        return new WriteOptions(Sidecars.NONE, WorldFileNaming.FORMAT, null, 1, true, TiffLayout.STRIPS,
                 DEFAULT_COG_TILE_SIZE);
     }
 

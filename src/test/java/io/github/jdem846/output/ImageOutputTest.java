@@ -31,6 +31,9 @@ class ImageOutputTest {
 
     private static final CrsInfo WGS84 = CrsInfo.geographic("WGS 84", 4326, Ellipsoid.WGS84);
     private static final GeoReference GEO = new GeoReference(5.7, 50.2, 6.6, 49.4, WGS84);
+    /** World file, .prj and .aux.xml next to a PNG (the default writes none). */
+    private static final WriteOptions SIDECARS_FOR_PNG =
+            WriteOptions.defaults().withSidecars(WriteOptions.Sidecars.WHEN_NOT_EMBEDDED);
 
     private List<String> listing() throws IOException {
         try (Stream<Path> files = Files.list(dir)) {
@@ -41,7 +44,7 @@ class ImageOutputTest {
     @Test
     void pngGetsWorldFilePrjAndAuxXml() throws IOException, FactoryException {
         Path png = dir.resolve("relief.png");
-        WriteResult result = ImageOutput.writeRgba(png, new int[6], 3, 2, GEO, WriteOptions.defaults());
+        WriteResult result = ImageOutput.writeRgba(png, new int[6], 3, 2, GEO, SIDECARS_FOR_PNG);
         assertEquals(List.of("relief.pgw", "relief.png", "relief.png.aux.xml", "relief.prj"), listing());
         assertEquals(png, result.image());
         assertEquals(List.of(dir.resolve("relief.pgw"), dir.resolve("relief.prj"), dir.resolve("relief.png.aux.xml")),
@@ -58,9 +61,8 @@ class ImageOutputTest {
     @Test
     void wldNamingAndNoSidecars() throws IOException {
         ImageOutput.writeGray(dir.resolve("a.png"), new byte[4], 2, 2, GEO,
-                WriteOptions.defaults().withWorldFileNaming(WriteOptions.WorldFileNaming.WLD));
-        ImageOutput.writeGray(dir.resolve("b.png"), new byte[4], 2, 2, GEO,
-                WriteOptions.defaults().withSidecars(WriteOptions.Sidecars.NONE));
+                SIDECARS_FOR_PNG.withWorldFileNaming(WriteOptions.WorldFileNaming.WLD));
+        ImageOutput.writeGray(dir.resolve("b.png"), new byte[4], 2, 2, GEO, WriteOptions.defaults()); // none
         assertEquals(List.of("a.png", "a.png.aux.xml", "a.prj", "a.wld", "b.png"), listing());
     }
 
@@ -76,7 +78,7 @@ class ImageOutputTest {
     void unknownCrsGivesAWorldFileButNoPrjAndSaysSo() throws IOException {
         GeoReference local = new GeoReference(0, 100, 50, 0, CrsInfo.UNKNOWN);
         WriteResult result = ImageOutput.writeGray(dir.resolve("m.png"), new byte[2], 1, 2, local,
-                WriteOptions.defaults());
+                SIDECARS_FOR_PNG);
         assertEquals(List.of("m.pgw", "m.png"), listing());
         assertEquals(1, result.notices().size());
         assertTrue(result.notices().get(0).contains("no .prj") && result.notices().get(0).contains("unknown"),
@@ -86,16 +88,16 @@ class ImageOutputTest {
     @Test
     void staleSidecarsOfAnEarlierRunAreRemovedWithANotice() throws IOException {
         Path png = dir.resolve("r.png");
-        ImageOutput.writeGray(png, new byte[4], 2, 2, GEO, WriteOptions.defaults());
+        ImageOutput.writeGray(png, new byte[4], 2, 2, GEO, SIDECARS_FOR_PNG);
         assertEquals(4, listing().size());
         // Same name, now without a known CRS: the old .prj and .aux.xml would lie about the new image.
         WriteResult unknown = ImageOutput.writeGray(png, new byte[4], 2, 2,
-                new GeoReference(0, 1, 1, 0, CrsInfo.UNKNOWN), WriteOptions.defaults());
+                new GeoReference(0, 1, 1, 0, CrsInfo.UNKNOWN), SIDECARS_FOR_PNG);
         assertEquals(List.of("r.pgw", "r.png"), listing());
         assertTrue(unknown.notices().stream().anyMatch(n -> n.contains("removed") && n.contains("r.prj")),
                 unknown.notices().toString());
         // And without any georeferencing: the world file goes too.
-        ImageOutput.writeGray(png, new byte[4], 2, 2, null, WriteOptions.defaults());
+        ImageOutput.writeGray(png, new byte[4], 2, 2, null, SIDECARS_FOR_PNG);
         assertEquals(List.of("r.png"), listing());
     }
 
@@ -145,7 +147,7 @@ class ImageOutputTest {
         try {
             IOException e = assertThrows(IOException.class,
                     () -> ImageOutput.writeGray(dir.resolve("s.png"), new byte[1], 1, 1, GEO,
-                            WriteOptions.defaults()));
+                            SIDECARS_FOR_PNG));
             assertTrue(e.getMessage().contains("s.prj"), e.getMessage());
             assertEquals(List.of("s.prj"), listing());
             assertEquals("old", Files.readString(prj));
@@ -193,7 +195,7 @@ class ImageOutputTest {
     @Test
     void imageSmallerThanTheDemKeepsTheDemsExtent() throws IOException {
         GeoReference geo = GeoReference.of(TestDems.load(TestDems.LUXEMBOURG).geometry());
-        ImageOutput.writeRgba(dir.resolve("lux.png"), new int[10 * 9], 10, 9, geo, WriteOptions.defaults());
+        ImageOutput.writeRgba(dir.resolve("lux.png"), new int[10 * 9], 10, 9, geo, SIDECARS_FOR_PNG);
         double[] wf = Files.readAllLines(dir.resolve("lux.pgw")).stream().mapToDouble(Double::parseDouble)
                 .toArray();
         // luxembourg: 95 × 90 cells of 0.008333…° from (5.741666…, 49.441666…): an image of 10 × 9 pixels

@@ -28,6 +28,10 @@ class InputProtectionTest {
         return tmp.resolve("g.flt");
     }
 
+    /** World file, .prj and .aux.xml next to a PNG (the default writes none). */
+    private static final WriteOptions SIDECARS_FOR_PNG =
+            WriteOptions.defaults().withSidecars(WriteOptions.Sidecars.WHEN_NOT_EMBEDDED);
+
     @Test
     void theFilesOfAGridFloatAreItsDataHeaderAndPrj() throws IOException {
         Path flt = gridFloat();
@@ -45,9 +49,11 @@ class InputProtectionTest {
     void filesWrittenFollowTheSidecarOption() {
         Path png = tmp.resolve("a.png");
         Path tif = tmp.resolve("a.tif");
-        assertEquals(List.of(png, tmp.resolve("a.pgw"), tmp.resolve("a.prj"), tmp.resolve("a.png.aux.xml")),
-                ImageOutput.filesWritten(png, WriteOptions.defaults()));
+        assertEquals(List.of(png), ImageOutput.filesWritten(png, WriteOptions.defaults()));
         assertEquals(List.of(tif), ImageOutput.filesWritten(tif, WriteOptions.defaults()));
+        assertEquals(List.of(png, tmp.resolve("a.pgw"), tmp.resolve("a.prj"), tmp.resolve("a.png.aux.xml")),
+                ImageOutput.filesWritten(png, SIDECARS_FOR_PNG));
+        assertEquals(List.of(tif), ImageOutput.filesWritten(tif, SIDECARS_FOR_PNG));
         assertEquals(List.of(tif, tmp.resolve("a.wld"), tmp.resolve("a.prj"), tmp.resolve("a.tif.aux.xml")),
                 ImageOutput.filesWritten(tif, WriteOptions.defaults().withSidecars(WriteOptions.Sidecars.ALWAYS)
                         .withWorldFileNaming(WriteOptions.WorldFileNaming.WLD)));
@@ -59,7 +65,7 @@ class InputProtectionTest {
     void aSidecarThatIsAnInputFileIsRefusedWithBothNames() throws IOException {
         Path flt = gridFloat();
         OutputOverwritesInputException e = assertThrows(OutputOverwritesInputException.class,
-                () -> InputProtection.check(tmp.resolve("g.png"), WriteOptions.defaults(), DemReader.filesOf(flt)));
+                () -> InputProtection.check(tmp.resolve("g.png"), SIDECARS_FOR_PNG, DemReader.filesOf(flt)));
         assertEquals(tmp.resolve("g.prj"), e.output());
         assertEquals(tmp.resolve("g.prj"), e.input());
         assertTrue(e.getMessage().contains("a sidecar of " + tmp.resolve("g.png")), e.getMessage());
@@ -80,7 +86,7 @@ class InputProtectionTest {
         Path other = tmp.resolve("sub/../g.png");
         Files.copy(Path.of(STEM + ".tif"), tmp.resolve("g.png"));   // an existing, unrelated file is fine
         assertThrows(OutputOverwritesInputException.class,
-                () -> InputProtection.check(other, WriteOptions.defaults(), DemReader.filesOf(flt)));
+                () -> InputProtection.check(other, SIDECARS_FOR_PNG, DemReader.filesOf(flt)));
         assertDoesNotThrow(() -> InputProtection.check(other,
                 WriteOptions.defaults().withSidecars(WriteOptions.Sidecars.NONE), DemReader.filesOf(flt)));
     }

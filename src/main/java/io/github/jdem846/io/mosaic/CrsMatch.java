@@ -1,5 +1,6 @@
 package io.github.jdem846.io.mosaic;
 
+import io.github.jdem846.internal.SisLoggers;
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.CrsResolver;
 import java.util.Locale;
@@ -13,6 +14,10 @@ import org.apache.sis.util.Utilities;
  * refused.
  */
 final class CrsMatch {
+
+    static {
+        SisLoggers.quiet(); // SIS's routine warnings off stderr, unless the application configured them
+    }
 
     private CrsMatch() {
     }
