@@ -44,8 +44,10 @@ import java.util.Objects;
  * relief.write(Path.of("relief.png"), WriteOptions.defaults());
  * }</pre>
  *
- * <p>Immutable and thread-safe; {@link #run} may be called from several threads at once. Interrupting the calling
- * thread stops a run with {@link InterruptedException}.
+ * <p>Immutable and thread-safe; {@link #run} may be called from several threads at once. Each run starts a pool of
+ * {@link RenderSettings#parallelism()} threads of its own, unless its execution settings name a shared pool
+ * ({@link RenderSettings#withPool}): then runs at once share that pool's threads and never shut it down, with the
+ * same result. Interrupting the calling thread stops a run with {@link InterruptedException}.
  *
  * @param input     the DEM file (GeoTIFF, GridFloat, ESRI ASCII, BIL, SRTM HGT) or files read as one grid, or
  *                  {@code null} for the bundled sample DEM
@@ -60,7 +62,7 @@ import java.util.Objects;
  *                  time)
  * @param mercatorScale how the cells of a Web Mercator DEM are measured for slopes and shadow lengths: on the
  *                  ground row by row ({@link MercatorScale#GROUND}, the default) or in the projection's metres
- * @param execution threads and tile size; the result does not depend on them
+ * @param execution threads, tile size and optionally a shared pool; the result does not depend on them
  * @param memory    the most heap bytes the job's grids, layers and pictures may take at once, or 0 for half the
  *                  heap's maximum ({@link #memoryBudget()}): {@link #runAndWrite} renders a picture that needs more
  *                  in tiles (docs/scale.md); the result does not depend on it

@@ -15,7 +15,8 @@ import java.util.concurrent.atomic.AtomicReference;
  * <p>{@link #invokeAll} runs parts {@code 0 … n − 1} and waits for them. A part does not start once the work is
  * cancelled; a long part also tests {@link #isCancelled()} itself every few lines (not per cell, although it is only
  * two volatile reads) and returns early. When the calling thread is interrupted (before or during the call),
- * {@code invokeAll} waits until no part runs any more, so nothing of the call is left on the pool, and throws
+ * {@code invokeAll} waits until no part runs any more (helpers still queued behind other work of a shared pool are
+ * withdrawn, not awaited), so nothing of the call is left on the pool, and throws
  * {@link CancellationException} with the thread's interrupt status set. A part's exception stops the other parts
  * the same way and is rethrown to the caller.
  *
@@ -98,6 +99,11 @@ public final class Cancellation {
             ended.await();
         } catch (InterruptedException e) {
             c.cancelled = true;
+            for (int h = 0; h < helpers; h++) {
+                if (started[h] != null && started[h].compareAndSet(false, true)) {
+                    ended.countDown();          // still queued (behind other work on a shared pool): never starts
+                }
+            }
             awaitUninterruptibly(ended);        // every part now returns at its next test
             caller.interrupt();
         }

@@ -1,12 +1,27 @@
 package io.github.jdem846.render;
 
+import java.util.Objects;
+import java.util.concurrent.ForkJoinPool;
+
 /**
- * How the renderer uses the machine: threads and tile size. The output does not depend on either.
+ * How the renderer uses the machine: threads, tile size and, optionally, a pool shared with other work. The output
+ * does not depend on any of them.
  *
- * @param parallelism number of worker threads, 1 to {@link #MAX_PARALLELISM}
+ * <p>Without a pool, each render runs on a pool of its own of {@code parallelism} threads, created for the call
+ * and shut down after it; several renders at once then each start that many threads. With a shared pool
+ * ({@link #withPool}), every render submits its work to that pool, so renders running at once from several
+ * threads share its threads; the renderer never creates, shuts down or resizes it (its owner does), and
+ * {@code parallelism} is the pool's.
+ *
+ * <p>Immutable and safe to share between threads.
+ *
+ * @param parallelism number of worker threads, 1 to {@link #MAX_PARALLELISM}; with a pool, its parallelism (at most
+ *                    {@link #MAX_PARALLELISM}) whatever is given
  * @param tileSize    tile edge in cells, {@link #MIN_TILE_SIZE} to {@link #MAX_TILE_SIZE}
+ * @param pool        the pool every render runs on, owned by the caller, or {@code null} for a pool of its own per
+ *                    render
  */
-public record RenderSettings(int parallelism, int tileSize) {
+public record RenderSettings(int parallelism, int tileSize, ForkJoinPool pool) {
 
     /**
      * The default tile edge, 256 cells. Measured (docs/performance.md, "Tile size"; {@code TileSizeStudy} on the
@@ -31,6 +46,9 @@ public record RenderSettings(int parallelism, int tileSize) {
     public static final int MAX_PARALLELISM = 1024;
 
     public RenderSettings {
+        if (pool != null) {
+            parallelism = Math.min(MAX_PARALLELISM, pool.getParallelism());
+        }
         if (parallelism < 1 || parallelism > MAX_PARALLELISM) {
             throw new IllegalArgumentException("threads must be 1 to " + MAX_PARALLELISM + ", got " + parallelism);
         }
@@ -38,6 +56,38 @@ public record RenderSettings(int parallelism, int tileSize) {
             throw new IllegalArgumentException("tile size must be " + MIN_TILE_SIZE + " to " + MAX_TILE_SIZE
                     + " cells, got " + tileSize);
         }
+    }
+
+    /**
+     * Settings without a shared pool: each render starts {@code parallelism} threads of its own.
+     *
+     * @param parallelism number of worker threads, 1 to {@link #MAX_PARALLELISM}
+     * @param tileSize    tile edge in cells, {@link #MIN_TILE_SIZE} to {@link #MAX_TILE_SIZE}
+     */
+    public RenderSettings(int parallelism, int tileSize) {
+        this(parallelism, tileSize, null);
+    }
+
+    /**
+     * A copy whose renders run on {@code pool} (shared by all renders given these settings, never shut down by
+     * them), with the pool's parallelism.
+     *
+     * @param pool a pool the caller owns and keeps open while renders use it
+     * @return the new settings
+     */
+    public RenderSettings withPool(ForkJoinPool pool) {
+        return new RenderSettings(parallelism, tileSize, Objects.requireNonNull(pool, "pool"));
+    }
+
+    /**
+     * A copy with {@code value} threads per render: without a shared pool, a pool of that many threads per render;
+     * with one, the pool is kept and its parallelism counts.
+     *
+     * @param value number of worker threads, 1 to {@link #MAX_PARALLELISM}
+     * @return the new settings
+     */
+    public RenderSettings withParallelism(int value) {
+        return new RenderSettings(value, tileSize, pool);
     }
 
     /** @return all available processors (at most {@link #MAX_PARALLELISM}) and the default tile size */

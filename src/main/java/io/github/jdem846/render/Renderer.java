@@ -25,10 +25,16 @@ import java.util.concurrent.TimeUnit;
  * <p>To render at a smaller size, resample the DEM first ({@link io.github.jdem846.raster.DemResampler}, or a
  * decimated read): stages then run at the output resolution.
  *
- * <p>Cancelling: interrupt the thread that called a method. Each call runs on a pool of its own
- * ({@link RenderSettings#parallelism()} daemon threads named {@code jdem846-render-…}); the running stage stops at
- * its next test, before each tile, each block of 48 sweep lines or every 64 rays of a march, and the method throws
- * {@link InterruptedException} (interrupt status cleared) once the pool's threads have ended. Measured on two
+ * <p>Threads: each call runs on a pool of its own ({@link RenderSettings#parallelism()} daemon threads named
+ * {@code jdem846-render-…}, shut down when the call returns), or on the caller's pool given by
+ * {@link RenderSettings#withPool}, which it never shuts down. A renderer is immutable and thread-safe: one renderer,
+ * or several, may render at once from several threads, with or without a shared pool; the DEM, scene and settings
+ * are only read. Renders sharing a pool share its threads, and the result is the same on any pool.
+ *
+ * <p>Cancelling: interrupt the thread that called a method. The running stage stops at its next test, before each
+ * tile, each block of 48 sweep lines or every 64 rays of a march, and the method throws
+ * {@link InterruptedException} (interrupt status cleared) once none of its work runs any more (and, on a pool of
+ * its own, once the pool's threads have ended); other renders on a shared pool go on. Measured on two
  * threads of a 2-core machine: an exact-shadow render of a 1197 × 643 DEM (3.7–7.7 s uninterrupted) throws a median
  * 1.4 ms and at most 8 ms after the interrupt, a soft sweep of 4788 × 2572 cells a median 22 ms, at most 94 ms
  * (docs/algorithms.md). The stages alone cancel the same way: {@link io.github.jdem846.shadow.ShadowAlgorithm}.
@@ -74,7 +80,7 @@ public final class Renderer {
         Objects.requireNonNull(scene, "scene");
         Objects.requireNonNull(progress, "progress");
         requireInside(area, dem);
-        try (WorkerPool workers = new WorkerPool(settings.parallelism())) {
+        try (WorkerPool workers = WorkerPool.of(settings)) {
             return render(dem, scene, area, progress, workers.pool);
         }
     }
@@ -173,7 +179,7 @@ public final class Renderer {
     private void illuminateTiles(Dem dem, IlluminationStage stage, LightField light, CellWindow area,
                                  RenderProgress progress, IlluminatedTile sink) throws InterruptedException {
         requireInside(area, dem);
-        try (WorkerPool workers = new WorkerPool(settings.parallelism())) {
+        try (WorkerPool workers = WorkerPool.of(settings)) {
             new TileExecutor(workers.pool, settings.tileSize()).forEachTile(area.width(), area.height(), "hillshade",
                     progress, (c0, r0, w, h) -> {
                         float[] tile = new float[w * h];
@@ -194,32 +200,47 @@ public final class Renderer {
     public float[] shadows(Dem dem, Scene scene, CellWindow area, RenderProgress progress)
             throws InterruptedException {
         requireInside(area, dem);
-        try (WorkerPool workers = new WorkerPool(settings.parallelism())) {
+        try (WorkerPool workers = WorkerPool.of(settings)) {
             float[] s = castShadows(dem, scene, area, workers.pool, progress);
             return s != null ? s : new float[area.width() * area.height()];
         }
     }
 
     /**
-     * A pool of daemon threads named {@value #WORKER_NAME}…, one per call: closing it shuts it down and waits (at
-     * most {@link #TERMINATION_WAIT_SECONDS}) until its threads have ended, which takes no time since every stage
-     * has returned by then. The interrupt status is kept.
+     * The pool of one call: the settings' shared pool, left as it is on closing, or else a pool of daemon threads
+     * named {@value #WORKER_NAME}…, one per call: closing it shuts it down and waits (at most
+     * {@link #TERMINATION_WAIT_SECONDS}) until its threads have ended, which takes no time since every stage has
+     * returned by then. The interrupt status is kept.
      */
     private static final class WorkerPool implements AutoCloseable {
         final ForkJoinPool pool;
+        private final boolean own;
         private final List<Thread> threads = new CopyOnWriteArrayList<>();
 
-        WorkerPool(int parallelism) {
+        private WorkerPool(ForkJoinPool shared) {
+            pool = shared;
+            own = false;
+        }
+
+        private WorkerPool(int parallelism) {
             pool = new ForkJoinPool(parallelism, p -> {
                 ForkJoinWorkerThread t = ForkJoinPool.defaultForkJoinWorkerThreadFactory.newThread(p);
                 t.setName(WORKER_NAME + t.getName());
                 threads.add(t);
                 return t;
             }, null, false);
+            own = true;
+        }
+
+        static WorkerPool of(RenderSettings settings) {
+            return settings.pool() != null ? new WorkerPool(settings.pool()) : new WorkerPool(settings.parallelism());
         }
 
         @Override
         public void close() {
+            if (!own) {
+                return;
+            }
             pool.shutdownNow();
             boolean interrupted = Thread.interrupted();
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(TERMINATION_WAIT_SECONDS);

@@ -39,7 +39,8 @@ import java.util.Objects;
  * @param sun              the light: fixed, or the sun at a date and time seen from the DEM's centre (or {@link
  *                         Sun#place()}), the same for every tile; a sun per tile is not allowed
  * @param execution        tiles rendered at once ({@link RenderSettings#parallelism()}) and the renderer's tile
- *                         size; the tiles do not depend on them
+ *                         size; with a shared pool ({@link RenderSettings#withPool}) every tile renders on it. The
+ *                         tiles do not depend on them
  * @param pngCompression   deflate level of the tiles, 0 to 9
  */
 public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, RenderSettings execution,

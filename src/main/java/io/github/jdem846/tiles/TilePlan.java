@@ -48,7 +48,8 @@ public final class TilePlan {
         this.range = range;
         this.projection = SourceProjection.of(info.geometry(), info.source());
         Scene scene = job.sceneFor(info, range, listener);
-        RenderSettings perTile = new RenderSettings(1, job.execution().tileSize());
+        RenderSettings perTile = job.execution().pool() != null ? job.execution()      // tiles share the pool
+                : new RenderSettings(1, job.execution().tileSize());
         Overview overview = overview(job, projection);
         List<Level> ls = new ArrayList<>();
         for (int z = job.zooms().min(); z <= job.zooms().max(); z++) {

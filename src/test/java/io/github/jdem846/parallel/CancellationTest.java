@@ -114,4 +114,32 @@ class CancellationTest {
         assertTrue(Thread.interrupted(), "the interrupt status stays set");
         assertTrue(seen[1]);
     }
+
+    @Test
+    void anInterruptDoesNotWaitForPartsQueuedBehindOtherWorkOfTheSharedPool() throws InterruptedException {
+        ForkJoinPool one = new ForkJoinPool(1);
+        java.util.concurrent.CountDownLatch release = new java.util.concurrent.CountDownLatch(1);
+        try {
+            one.execute(() -> {                 // another caller's work holding the pool's only thread
+                try {
+                    release.await();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            });
+            AtomicInteger runs = new AtomicInteger();
+            InterruptedRun run = InterruptedRun.of(() -> {
+                Cancellation.invokeAll(one, 4, (i, c) -> runs.incrementAndGet());
+                return null;
+            }, 100);
+            assertInstanceOf(CancellationException.class, run.thrown(), "ended by " + run.thrown());
+            assertTrue(run.millisAfterInterrupt() < 500, run.millisAfterInterrupt() + " ms after the interrupt");
+            release.countDown();
+            assertTrue(one.awaitQuiescence(10, java.util.concurrent.TimeUnit.SECONDS));
+            assertEquals(0, runs.get(), "a queued part does not start after the call has returned");
+        } finally {
+            release.countDown();
+            one.shutdownNow();
+        }
+    }
 }

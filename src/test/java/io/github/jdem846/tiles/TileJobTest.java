@@ -2,6 +2,7 @@ package io.github.jdem846.tiles;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -195,6 +196,21 @@ class TileJobTest {
             d = Math.max(d, Math.abs((a >>> shift & 255) - (b >>> shift & 255)));
         }
         return d;
+    }
+
+    @Test
+    void aSharedPoolWritesTheSameArchive() throws Exception {
+        Path own = dir.resolve("own.pmtiles");
+        Path shared = dir.resolve("shared.pmtiles");
+        job().run(own, JobListener.NONE);
+        java.util.concurrent.ForkJoinPool pool = new java.util.concurrent.ForkJoinPool(2);
+        try {
+            job().withExecution(new RenderSettings(2, 256).withPool(pool)).run(shared, JobListener.NONE);
+            assertFalse(pool.isShutdown(), "the caller's pool is left open");
+        } finally {
+            pool.shutdownNow();
+        }
+        assertArrayEquals(Files.readAllBytes(own), Files.readAllBytes(shared));
     }
 
     @Test
