@@ -7,9 +7,7 @@ import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.raster.GridRequestException;
 import io.github.jdem846.render.RenderSettings;
-import io.github.jdem846.sun.SunPosition;
 import java.io.PrintWriter;
-import java.util.Locale;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
@@ -55,34 +53,8 @@ final class JobRunner {
                 .withSun(job.sun().byTime() ? Sun.fixed(300, 10) : job.sun());
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> warmUpJob.run(dem, JobListener.NONE), input.input());
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
-            job.runAndWrite(output.path(), options, new JobListener() {
-                @Override
-                public void update(String stage, long done, long total) {
-                    progress.update(stage, done, total);
-                }
-
-                @Override
-                public void notice(String message) {
-                    err.println("jdem846: note: " + message);
-                    err.flush();
-                }
-
-                @Override
-                public void phaseDone(String phase) {
-                    if (phase.equals("read")) {
-                        warmUp.stop();
-                    }
-                    times.lap(phase);
-                }
-
-                @Override
-                public void sun(SunPosition sun) {
-                    err.println(String.format(Locale.ROOT, "jdem846: sun at %s: azimuth %.2f°, elevation %.2f°%s",
-                            sunTime, sun.azimuthDegrees(), sun.elevationDegrees(),
-                            sun.isBelowHorizon() ? " (below the horizon: no direct light)" : ""));
-                    err.flush();
-                }
-            });
+            job.runAndWrite(output.path(), options, new ConsoleJobListener(progress, err, times, sunTime,
+                    warmUp::stop));
         } catch (GridRequestException e) {
             throw input.usageError(e);
         } finally {

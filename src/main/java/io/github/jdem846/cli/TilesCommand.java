@@ -1,8 +1,6 @@
 package io.github.jdem846.cli;
 
-import io.github.jdem846.job.JobListener;
 import io.github.jdem846.render.Scene;
-import io.github.jdem846.sun.SunPosition;
 import io.github.jdem846.tiles.TileFormat;
 import io.github.jdem846.tiles.TileJob;
 import io.github.jdem846.tiles.TileReport;
@@ -158,31 +156,7 @@ public final class TilesCommand implements Callable<Integer> {
         PhaseTimes times = new PhaseTimes();
         TileReport report;
         try (ConsoleProgress progress = ConsoleProgress.create(quiet)) {
-            report = job.run(output, new JobListener() {
-                @Override
-                public void update(String stage, long done, long total) {
-                    progress.update(stage, done, total);
-                }
-
-                @Override
-                public void notice(String message) {
-                    err.println("jdem846: note: " + message);
-                    err.flush();
-                }
-
-                @Override
-                public void phaseDone(String phase) {
-                    times.lap(phase);
-                }
-
-                @Override
-                public void sun(SunPosition p) {
-                    err.println(String.format(Locale.ROOT, "jdem846: sun at %s: azimuth %.2f°, elevation %.2f°%s",
-                            sun.time(), p.azimuthDegrees(), p.elevationDegrees(),
-                            p.isBelowHorizon() ? " (below the horizon: no direct light)" : ""));
-                    err.flush();
-                }
-            });
+            report = job.run(output, new ConsoleJobListener(progress, err, times, sun.time(), () -> { }));
         }
         if (!quiet) {
             PrintWriter out = spec.commandLine().getOut();
