@@ -25,7 +25,7 @@ module io.github.jdem846 {
     exports io.github.jdem846.tiles;
     exports io.github.jdem846.tint;
 
-    // BufferedImage and RenderedImage in the API; ImageIO for reading and writing
+    // BufferedImage and RenderedRelief in the API; ImageIO for reading and writing
     requires transitive java.desktop;
     // CRS parsing and WKT; its modules also make GeoAPI (org.opengis.geoapi) and javax.measure readable
     requires transitive org.apache.sis.referencing;

@@ -10,7 +10,7 @@ import io.github.jdem846.output.GeoReference;
 import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.raster.Dem;
-import io.github.jdem846.render.RenderedImage;
+import io.github.jdem846.render.RenderedRelief;
 import io.github.jdem846.render.Renderer;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shadow.ShadowAlgorithm;
@@ -23,7 +23,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The stage-level use README names (Renderer → RenderedImage → ImageOutput), on a real DEM. */
+/** The stage-level use README names (Renderer → RenderedRelief → ImageOutput), on a real DEM. */
 class ReadmeExampleTest {
 
     @Test
@@ -34,7 +34,7 @@ class ReadmeExampleTest {
                 .withTint(ColorRamp.named("etopo1"))
                 .withShadows(ShadowAlgorithm.SWEEP)
                 .withLight(new LightDirection(300, 12));
-        RenderedImage image = new Renderer().render(dem, scene, (stage, done, total) -> reports.incrementAndGet());
+        RenderedRelief image = new Renderer().render(dem, scene, (stage, done, total) -> reports.incrementAndGet());
         BufferedImage picture = image.toBufferedImage();
         ImageOutput.writeRgba(dir.resolve("relief.png"), image.argb(), image.width(), image.height(),
                 GeoReference.of(image.geometry()), WriteOptions.defaults());

@@ -60,12 +60,12 @@ public final class Renderer {
     }
 
     /** Renders without progress reports. */
-    public RenderedImage render(Dem dem, Scene scene) throws InterruptedException {
+    public RenderedRelief render(Dem dem, Scene scene) throws InterruptedException {
         return render(dem, scene, RenderProgress.NONE);
     }
 
     /** Renders {@code scene} over the whole of {@code dem}, reporting progress per stage. */
-    public RenderedImage render(Dem dem, Scene scene, RenderProgress progress) throws InterruptedException {
+    public RenderedRelief render(Dem dem, Scene scene, RenderProgress progress) throws InterruptedException {
         return render(dem, scene, CellWindow.whole(dem.width(), dem.height()), progress);
     }
 
@@ -74,7 +74,7 @@ public final class Renderer {
      * read as the halo that hillshade normals and cast shadows need, but never drawn or traced. Equal to the same
      * cells of a whole-grid render.
      */
-    public RenderedImage render(Dem dem, Scene scene, CellWindow area, RenderProgress progress)
+    public RenderedRelief render(Dem dem, Scene scene, CellWindow area, RenderProgress progress)
             throws InterruptedException {
         Objects.requireNonNull(dem, "dem");
         Objects.requireNonNull(scene, "scene");
@@ -85,7 +85,7 @@ public final class Renderer {
         }
     }
 
-    private RenderedImage render(Dem dem, Scene scene, CellWindow area, RenderProgress progress, ForkJoinPool pool)
+    private RenderedRelief render(Dem dem, Scene scene, CellWindow area, RenderProgress progress, ForkJoinPool pool)
             throws InterruptedException {
         int width = area.width();
         int height = area.height();
@@ -115,7 +115,7 @@ public final class Renderer {
                         }
                     }
                 });
-        return new RenderedImage(width, height, argb,
+        return new RenderedRelief(width, height, argb,
                 dem.geometry().window(area.col(), area.row(), width, height));
     }
 

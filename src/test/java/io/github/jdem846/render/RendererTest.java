@@ -40,8 +40,8 @@ class RendererTest {
         for (ShadowAlgorithm alg : new ShadowAlgorithm[] {ShadowAlgorithm.MARCH, ShadowAlgorithm.EXACT}) {
             Scene scene = Scene.defaults().withShadows(alg).withLight(new LightDirection(250, 10));
             Renderer renderer = new Renderer(new RenderSettings(2, 64));
-            RenderedImage whole = renderer.render(BT, scene);
-            RenderedImage part = renderer.render(BT, scene, area, RenderProgress.NONE);
+            RenderedRelief whole = renderer.render(BT, scene);
+            RenderedRelief part = renderer.render(BT, scene, area, RenderProgress.NONE);
             assertEquals(area.width(), part.width());
             assertEquals(BT.geometry().window(37, 21, 150, 90), part.geometry());
             for (int r = 0; r < area.height(); r++) {

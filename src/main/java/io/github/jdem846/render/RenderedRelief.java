@@ -12,7 +12,7 @@ import java.awt.image.BufferedImage;
  * @param argb     row-major 0xAARRGGBB; no-data is 0 (fully transparent). Owned by this record; do not modify.
  * @param geometry the grid the pixels cover
  */
-public record RenderedImage(int width, int height, int[] argb, GridGeometry geometry) {
+public record RenderedRelief(int width, int height, int[] argb, GridGeometry geometry) {
 
     /** @return A new {@code TYPE_INT_ARGB} image holding a copy of the pixels */
     public BufferedImage toBufferedImage() {
