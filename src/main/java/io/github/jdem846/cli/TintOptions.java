@@ -2,6 +2,7 @@ package io.github.jdem846.cli;
 
 import io.github.jdem846.tint.ColorRamp;
 import io.github.jdem846.tint.ColorSelection;
+import io.github.jdem846.tint.TintScale;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -18,7 +19,8 @@ public final class TintOptions {
 
     @Option(names = "--tint", paramLabel = "NAME|FILE", defaultValue = ColorRamp.DEFAULT_NAME,
             description = "Colour ramp: a built-in name (hypsometric, hypsometric-natural, bathymetric, etopo1, "
-                    + "standard, gray, …), a gdaldem colour file, or 'none'. Default: ${DEFAULT-VALUE}: the "
+                    + "standard, dark-bathymetric, tri-green-yellow-red, gray, green, black, bumpmap, …), a gdaldem "
+                    + "colour file, or 'none'. Default: ${DEFAULT-VALUE}: the "
                     + "article's table 2 (hypsometric), split at 0 m with the bathymetric ramp below when the DEM "
                     + "holds both land and sea.")
     String tint;
@@ -30,6 +32,12 @@ public final class TintOptions {
     @Option(names = {"--nearest-color", "--nearest_color_entry", "-nearest_color_entry"},
             description = "Colour file: the nearest entry's colour, no interpolation (gdaldem -nearest_color_entry).")
     boolean nearest;
+
+    @Option(names = "--tint-scale", paramLabel = "SCALE", defaultValue = "linear",
+            description = "How a percent ramp spreads the DEM's range over its colours (the original's elevation "
+                    + "scalers): ${COMPLETION-CANDIDATES}; logarithmic gives low ground more colours, exponential and "
+                    + "cubic high ground. Default: ${DEFAULT-VALUE}.")
+    TintScale scale;
 
     /**
      * Uses {@code nameOrFile}, given in the colour file's place of {@code tint IN COLORFILE OUT}, as
@@ -50,6 +58,19 @@ public final class TintOptions {
      * that cannot be read is an input error.
      */
     ColorRamp ramp() throws IOException {
+        ColorRamp ramp = unscaledRamp();
+        if (ramp == null || scale == TintScale.LINEAR) {
+            return ramp;
+        }
+        try {
+            return ramp.withScale(scale);
+        } catch (IllegalArgumentException e) {
+            throw Usage.invalid(command, e.getMessage() + " (drop --tint-scale, or choose such a ramp)",
+                    "--tint-scale");
+        }
+    }
+
+    private ColorRamp unscaledRamp() throws IOException {
         if (exact && nearest) {
             throw Usage.error(command, "give --exact-color or --nearest-color, not both");
         }

@@ -17,16 +17,20 @@ final class BuiltInRamps {
     private static final Map<String, ColorRamp> RAMPS = build();
 
     /** The original jDem846 identifiers, accepted as aliases. */
-    private static final Map<String, String> ALIASES = Map.of(
-            "hypsometric-tint", "hypsometric-original",
-            "hypsometric-tint-global", "hypsometric-global",
-            "hypsometric-tint-natural", "hypsometric-natural",
-            "hypsometric-etopo1-tint", "etopo1",
-            "bathymetric-tint", "bathymetric",
-            "standard-coloring", "standard",
-            "gray-tint", "gray",
-            "grey", "gray",
-            "bumpmap-tint", "bumpmap");
+    private static final Map<String, String> ALIASES = Map.ofEntries(
+            Map.entry("hypsometric-tint", "hypsometric-original"),
+            Map.entry("hypsometric-tint-global", "hypsometric-global"),
+            Map.entry("hypsometric-tint-natural", "hypsometric-natural"),
+            Map.entry("hypsometric-etopo1-tint", "etopo1"),
+            Map.entry("bathymetric-tint", "bathymetric"),
+            Map.entry("standard-coloring", "standard"),
+            Map.entry("gray-tint", "gray"),
+            Map.entry("grey", "gray"),
+            Map.entry("bumpmap-tint", "bumpmap"),
+            Map.entry("dark-bathy-tint", "dark-bathymetric"),
+            Map.entry("tri", "tri-green-yellow-red"),
+            Map.entry("green-tint", "green"),
+            Map.entry("black-tint", "black"));
 
     private BuiltInRamps() {
     }
@@ -86,6 +90,17 @@ final class BuiltInRamps {
         add(m, percent("gray", 0, rgb(128, 128, 128)));
         // The original's bumpmap: black at the minimum to white at the maximum.
         add(m, percent("bumpmap", 0, rgb(0, 0, 0), 100, rgb(255, 255, 255)));
+        // The original's gradient/dark-bathymetric.json: dark blues in metres below sea level, white land.
+        add(m, StopRamp.of("dark-bathymetric", List.of(
+                ColorStop.absolute(-11000, 3, 8, 16), ColorStop.absolute(-500, 26, 71, 128),
+                ColorStop.absolute(-0.001, 26, 71, 128), ColorStop.absolute(-0.001, 255, 255, 255),
+                ColorStop.absolute(8500, 255, 255, 255))));
+        // The original's gradient/tri.json (its terrain-ruggedness colourer's ramp).
+        add(m, percent("tri-green-yellow-red", 0, rgb(0, 255, 0), 50, rgb(255, 255, 0), 100, rgb(255, 0, 0)));
+        // The original's GreenTint, BlackTint and TransparentColoring: one colour each.
+        add(m, percent("green", 0, rgb(146, 173, 144)));
+        add(m, percent("black", 0, rgb(0, 0, 0)));
+        add(m, StopRamp.of("transparent", List.of(new ColorStop(0, StopUnit.PERCENT, 0))));
         return Collections.unmodifiableMap(m);
     }
 

@@ -20,7 +20,7 @@ import java.util.List;
  * int argb = tint.argb(dem.get(col, row));
  * }</pre>
  */
-public sealed interface ColorRamp permits StopRamp, SeaLandRamp, TopoBathyRamp {
+public sealed interface ColorRamp permits StopRamp, SeaLandRamp, TopoBathyRamp, ScaledRamp {
 
     /**
      * The name of the default ramp, {@code hypsometric-bathymetric}: the article's table 2 ({@code hypsometric})
@@ -55,6 +55,19 @@ public sealed interface ColorRamp permits StopRamp, SeaLandRamp, TopoBathyRamp {
      */
     default TintFunction bind(Dem dem) {
         return bind(dem.statistics());
+    }
+
+    /**
+     * This ramp with its range spread by {@code scale} (the original's elevation scalers), for ramps in percent of
+     * the range; see {@link ScaledRamp}.
+     *
+     * @param scale how the range is spread over the stops
+     * @return this ramp itself for {@link TintScale#LINEAR}, else the scaled ramp
+     * @throws IllegalArgumentException if the ramp places colours at fixed elevations (etopo1, dark-bathymetric, a
+     *                                  colour file in metres) or is already scaled
+     */
+    default ColorRamp withScale(TintScale scale) {
+        return scale == TintScale.LINEAR ? this : new ScaledRamp(this, scale);
     }
 
     /**
