@@ -270,7 +270,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         requireDrawable();
         Scene s = productScene();
         try (InputFile in = InputFile.open(input)) {
-            Planned planned = plan(in.input(), s);
+            Planned planned = plan(in.input(), s, listener);
             PicturePlan plan = planned.plan();
             InsufficientHeapException.requireFits(plan.gridCells(), plan.width(), plan.height(),
                     JobMemory.of(product, s).perPixel(), Runtime.getRuntime().maxMemory());
@@ -333,7 +333,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
             GeoReference geo = GeoReference.of(picture);
             return rgba ? ImageOutput.openRgba(file, picture.width(), picture.height(), geo, o)
                     : ImageOutput.openGray(file, picture.width(), picture.height(), geo, o);
-        }, result -> result.write(file, options), listener);
+        }, result -> result.write(file, options, listener), listener);
     }
 
     /** Opens the image a picture of {@code picture}'s size and place is written to. */
@@ -372,7 +372,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         Scene s = productScene();
         WriteResult written;
         try (InputFile in = InputFile.open(input)) {
-            Planned planned = plan(in.input(), s);
+            Planned planned = plan(in.input(), s, listener);
             if (fitsInMemory(planned.plan(), s)) {
                 written = whole.write(renderInMemory(in.input(), planned, s, listener));
             } else {
@@ -389,14 +389,14 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     }
 
     /** Plans the read: the window with the halo the scene's stages need, from the file's header. */
-    private Planned plan(DemInput files, Scene s) throws IOException {
+    private Planned plan(DemInput files, Scene s, JobListener listener) throws IOException {
         DemLoader.Halo halo = s.hillshade() == null ? DemLoader.Halo.NONE : DemLoader.Halo.uniform(1);
         if (s.hasShadows()) {
             halo = halo.union(shadowHalo(s));
         }
         DemInfo read = DemReader.inspect(files).withDefaultEllipsoid(body.ellipsoid());
         DemInfo info = read.withGeometry(mercatorScale.apply(read.geometry()));
-        DemLoader.StreamedStatistics statistics = new DemLoader.StreamedStatistics(files);
+        DemLoader.StreamedStatistics statistics = new DemLoader.StreamedStatistics(files, listener);
         return new Planned(DemLoader.plan(info, body.ellipsoid(), window, size, halo, statistics), statistics);
     }
 
@@ -420,7 +420,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     /** Loads the picture's grid with its halo and renders it. */
     private ReliefResult renderInMemory(DemInput files, Planned planned, Scene s, JobListener listener)
             throws IOException, InterruptedException {
-        DemLoader.Loaded loaded = DemLoader.load(files, planned.plan(), needsStatistics(s), planned.statistics());
+        DemLoader.Loaded loaded = DemLoader.load(files, planned.plan(), needsStatistics(s), planned.statistics(),
+                listener);
         listener.phaseDone("read");
         for (String notice : loaded.info().notices()) {
             listener.notice(notice);
