@@ -81,10 +81,15 @@ final class ConsoleProgress implements RenderProgress, AutoCloseable {
         if (log == null) {
             return new ConsoleProgressBarConsumer(System.err);
         }
+        String[] last = {null};
         return new DelegatingProgressBarConsumer(line -> {
+            String text = line.stripTrailing();
             synchronized (log) {
-                log.println(line.stripTrailing());
-                log.flush();
+                if (!text.equals(last[0])) {           // the bar redraws its last state when closed
+                    last[0] = text;
+                    log.println(text);
+                    log.flush();
+                }
             }
         }, LOG_LINE_LENGTH);
     }
