@@ -399,6 +399,6 @@ public enum ShadowAlgorithm {
                     out[rr * ww + c] = marcher.shade(win.col() + c, win.row() + rr);
                 }
             }
-        }, done -> progress.update((long) Math.min(win.height(), done * rowsPerTask), win.height()));
+        }, done -> progress.update(Math.min(win.height(), (long) done * rowsPerTask), win.height()));
     }
 }
