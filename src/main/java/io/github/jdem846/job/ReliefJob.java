@@ -275,7 +275,27 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
             InsufficientHeapException.requireFits(plan.gridCells(), plan.width(), plan.height(),
                     JobMemory.of(product, s).perPixel(), Runtime.getRuntime().maxMemory());
             return renderInMemory(in.input(), planned, s, listener);
+        } catch (IOException e) {
+            throw interruptedOr(e);
         }
+    }
+
+    /**
+     * An I/O failure of a thread that was interrupted meanwhile (a channel closed by the interrupt, a read or write
+     * stopped) as the {@link InterruptedException} it is, the interrupt status cleared; any other as it is.
+     *
+     * @param failure what a read or write threw
+     * @return the failure to rethrow, when it is not an interrupt
+     * @throws InterruptedException when the calling thread was interrupted
+     */
+    static IOException interruptedOr(IOException failure) throws InterruptedException {
+        if (Thread.interrupted() || failure instanceof java.io.InterruptedIOException
+                || failure instanceof java.nio.channels.ClosedByInterruptException) {
+            InterruptedException e = new InterruptedException("job cancelled");
+            e.initCause(failure);
+            throw e;
+        }
+        return failure;
     }
 
     /**
@@ -378,6 +398,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
             } else {
                 written = renderInTiles(in.input(), planned, s, sink, listener, layouts);
             }
+        } catch (IOException e) {
+            throw interruptedOr(e);
         }
         written.notices().forEach(listener::notice);
         listener.phaseDone("write");

@@ -114,7 +114,17 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
         Objects.requireNonNull(listener, "listener");
         requireTileable();
         TileFormat format = checkOutput(output);
-        TilePlan plan = TilePlan.prepare(this, listener);
+        TilePlan plan;
+        try {
+            plan = TilePlan.prepare(this, listener);
+        } catch (IOException e) {
+            if (Thread.interrupted()) {          // a read stopped by the interrupt, not a broken file
+                InterruptedException ie = new InterruptedException("tiles cancelled while reading");
+                ie.initCause(e);
+                throw ie;
+            }
+            throw e;
+        }
         try (TileSink sink = TileSink.open(output)) {
             TileReport report = new PyramidRun(plan, sink, listener).execute(output, format);
             listener.phaseDone("render");

@@ -2,6 +2,8 @@ package io.github.jdem846.job;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
@@ -124,5 +126,27 @@ class JobProgressTest {
         listener.assertStage("render", 20);
         assertEquals(1197L * HEIGHT, listener.of("render").get(0).total());
         assertTrue(listener.of("render").size() <= StageProgress.STEPS + 2, "thinned to about 200 updates");
+    }
+
+    @Test
+    void anInterruptWhileReadingEndsTheJobAsAnInterruptAndLeavesNoFile() throws Exception {
+        // the listener hears the read on the calling thread (one part: the file has fewer than 2²¹ cells)
+        for (String stage : new String[] {RenderProgress.READ}) {
+            Path png = dir.resolve("interrupted-" + stage + ".png");
+            JobListener interrupting = new JobListener() {
+                @Override
+                public void update(String s, long done, long total) {
+                    if (s.equals(stage) && done > 0) {
+                        Thread.currentThread().interrupt();
+                    }
+                }
+            };
+            assertThrows(InterruptedException.class, () -> job(ShadowAlgorithm.NONE).runAndWrite(png,
+                    WriteOptions.defaults(), interrupting), stage);
+            assertFalse(Thread.interrupted(), stage + ": the exception reports the interrupt, the status is cleared");
+            try (java.util.stream.Stream<Path> left = Files.list(dir)) {
+                assertEquals(List.of(), left.toList(), stage + ": nothing is left");
+            }
+        }
     }
 }
