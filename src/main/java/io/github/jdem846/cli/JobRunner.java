@@ -52,7 +52,7 @@ final class JobRunner {
                 .withSize(io.github.jdem846.render.OutputSize.FULL)
                 .withSun(job.sun().byTime() ? Sun.fixed(300, 10) : job.sun());
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> warmUpJob.run(dem, JobListener.NONE), input.input());
-        try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
+        try (ConsoleProgress progress = ConsoleProgress.create(output.quiet, output.progress, err)) {
             job.runAndWrite(output.path(), options, new ConsoleJobListener(progress, err, times, sunTime,
                     warmUp::stop));
         } catch (GridRequestException e) {

@@ -28,6 +28,10 @@ public final class OutputOptions {
     @Option(names = {"-q", "--quiet"}, description = "No progress bar.")
     boolean quiet;
 
+    @Option(names = "--progress", description = "Show progress (read, shadows, shading, write, …) even when "
+            + "stderr is not a terminal: a line per update, for logs.")
+    boolean progress;
+
     /** The command these options belong to, for usage errors (null when built by hand). */
     @Spec(Spec.Target.MIXEE)
     CommandSpec mixee;

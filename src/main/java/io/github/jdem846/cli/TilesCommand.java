@@ -53,6 +53,10 @@ public final class TilesCommand implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "No progress bar and no summary line.")
     boolean quiet;
 
+    @Option(names = "--progress", description = "Show progress even when stderr is not a terminal: a line per "
+            + "update, for logs.")
+    boolean progress;
+
     @Mixin
     SceneOptions sceneOptions;
 
@@ -155,8 +159,8 @@ public final class TilesCommand implements Callable<Integer> {
         TileJob job = tileJob(err);
         PhaseTimes times = new PhaseTimes();
         TileReport report;
-        try (ConsoleProgress progress = ConsoleProgress.create(quiet)) {
-            report = job.run(output, new ConsoleJobListener(progress, err, times, sun.time(), () -> { }));
+        try (ConsoleProgress bar = ConsoleProgress.create(quiet, progress, err)) {
+            report = job.run(output, new ConsoleJobListener(bar, err, times, sun.time(), () -> { }));
         }
         if (!quiet) {
             PrintWriter out = spec.commandLine().getOut();

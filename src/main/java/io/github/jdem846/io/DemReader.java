@@ -14,6 +14,8 @@ import io.github.jdem846.io.source.RasterSource;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.render.RenderProgress;
+import io.github.jdem846.render.StageProgress;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
@@ -102,7 +104,21 @@ public final class DemReader {
      * @throws IOException naming the file when it cannot be read
      */
     public static LoadedDem load(DemInput input, ReadRequest request) throws IOException {
-        return load(input, request, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
+        return load(input, request, RenderProgress.NONE);
+    }
+
+    /**
+     * {@link #load(DemInput, ReadRequest)}, telling {@code progress} the rows of the grid read (stage
+     * {@value RenderProgress#READ}, rows at the read's resolution, ending at the grid's height).
+     *
+     * @param input    the DEM file or files
+     * @param request  the window, the decimation and the memory limit
+     * @param progress told of the rows read, from the reading threads
+     * @return the grid with the header and the statistics of the cells read
+     * @throws IOException naming the file when it cannot be read
+     */
+    public static LoadedDem load(DemInput input, ReadRequest request, RenderProgress progress) throws IOException {
+        return load(input, request, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART, progress);
     }
 
     /** Fewest cells for a separately read part: below this, opening another reader costs more than it saves. */
@@ -121,7 +137,13 @@ public final class DemReader {
 
     static LoadedDem load(DemInput input, ReadRequest request, int parallelism, long minCellsPerPart)
             throws IOException {
+        return load(input, request, parallelism, minCellsPerPart, RenderProgress.NONE);
+    }
+
+    private static LoadedDem load(DemInput input, ReadRequest request, int parallelism, long minCellsPerPart,
+                                  RenderProgress progress) throws IOException {
         Objects.requireNonNull(request, "request");
+        Objects.requireNonNull(progress, "progress");
         Path file = input.first();
         try (RasterSource source = open(input)) {
             DemInfo info = source.info();
@@ -139,9 +161,13 @@ public final class DemReader {
                     advice);
             float[] values = new float[outW * outH];
             double noData = info.noDataOrNaN();
+            StageProgress rows = new StageProgress(progress, RenderProgress.READ, outH).start();
             ElevationStatistics stats = readInParts(input, source, cells, d, parallelism, minCellsPerPart,
-                    (src, part, outRow0) -> BlockReader.read(src, part, d, noData,
-                            (row, v) -> System.arraycopy(v, 0, values, (outRow0 + row) * outW, outW)));
+                    (src, part, outRow0) -> BlockReader.read(src, part, d, noData, (row, v) -> {
+                        System.arraycopy(v, 0, values, (outRow0 + row) * outW, outW);
+                        rows.add(1);
+                    }));
+            rows.finish();
             GridGeometry g = info.geometry().window(cells.col(), cells.row(), cells.width(), cells.height());
             if (d > 1) {
                 g = g.decimate(d, d);
@@ -324,7 +350,21 @@ public final class DemReader {
      * @throws IOException naming the file when it cannot be read
      */
     public static ElevationStatistics statistics(DemInput input) throws IOException {
-        return statistics(input, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
+        return statistics(input, RenderProgress.NONE);
+    }
+
+    /**
+     * {@link #statistics(DemInput)}, telling {@code progress} the rows streamed (stage
+     * {@value RenderProgress#STATISTICS}, ending at the grid's height).
+     *
+     * @param input    the DEM file or files
+     * @param progress told of the rows streamed, from the reading threads
+     * @return the statistics of every valid cell at full resolution
+     * @throws IOException naming the file when it cannot be read
+     */
+    public static ElevationStatistics statistics(DemInput input, RenderProgress progress) throws IOException {
+        return statistics(input, null, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART,
+                Objects.requireNonNull(progress, "progress"));
     }
 
     /** {@link #statistics(Path)} in up to {@code parallelism} bands of at least {@code minCellsPerPart} cells. */
@@ -344,16 +384,18 @@ public final class DemReader {
      */
     public static ElevationStatistics statistics(DemInput input, Window.Cells window) throws IOException {
         Objects.requireNonNull(window, "window");
-        return statistics(input, window, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART);
+        return statistics(input, window, Runtime.getRuntime().availableProcessors(), MIN_CELLS_PER_PART,
+                RenderProgress.NONE);
     }
 
     static ElevationStatistics statistics(DemInput input, int parallelism, long minCellsPerPart)
             throws IOException {
-        return statistics(input, null, parallelism, minCellsPerPart);
+        return statistics(input, null, parallelism, minCellsPerPart, RenderProgress.NONE);
     }
 
     private static ElevationStatistics statistics(DemInput input, Window.Cells window, int parallelism,
-                                                  long minCellsPerPart) throws IOException {
+                                                  long minCellsPerPart, RenderProgress progress)
+            throws IOException {
         Path file = input.first();
         try (RasterSource source = open(input)) {
             DemInfo info = source.info();
@@ -371,8 +413,11 @@ public final class DemReader {
             requireBandFits(file, source, all, 1);
             MemoryGuard.requireFits(file, 0, 0, BlockReader.bandBytes(source, all, 1), "give Java more heap"
                     + " with -Xmx");
-            return readInParts(input, source, all, 1, parallelism, minCellsPerPart,
-                    (src, part, outRow0) -> BlockReader.read(src, part, 1, noData, (row, v) -> { }));
+            StageProgress rows = new StageProgress(progress, RenderProgress.STATISTICS, all.height()).start();
+            ElevationStatistics stats = readInParts(input, source, all, 1, parallelism, minCellsPerPart,
+                    (src, part, outRow0) -> BlockReader.read(src, part, 1, noData, (row, v) -> rows.add(1)));
+            rows.finish();
+            return stats;
         }
     }
 

@@ -12,6 +12,7 @@ import io.github.jdem846.raster.DemResampler;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.render.OutputSize;
+import io.github.jdem846.render.RenderProgress;
 import io.github.jdem846.shadow.CellWindow;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -149,11 +150,11 @@ final class DemLoader {
                               Ellipsoid body, int bytesPerPixel) throws IOException {
         Objects.requireNonNull(body, "body");
         DemInfo info = DemReader.inspect(file).withDefaultEllipsoid(body);
-        StreamedStatistics streamed = new StreamedStatistics(file);
+        StreamedStatistics streamed = new StreamedStatistics(file, RenderProgress.NONE);
         PicturePlan plan = plan(info, body, window, size, halo, streamed);
         long maxHeap = Runtime.getRuntime().maxMemory();
         InsufficientHeapException.requireFits(plan.gridCells(), plan.width(), plan.height(), bytesPerPixel, maxHeap);
-        return load(file, plan, fileStatistics, streamed);
+        return load(file, plan, fileStatistics, streamed, RenderProgress.NONE);
     }
 
     /**
@@ -197,12 +198,13 @@ final class DemLoader {
      * @param fileStatistics also give the whole file's elevation range (taken during the read when it covers the
      *                       whole file, decimated or not; otherwise from {@code streamed}, in a pass of its own
      *                       without holding the grid, if it has not streamed them yet)
+     * @param progress       told of the rows read ({@link DemReader#load(DemInput, ReadRequest, RenderProgress)})
      */
-    static Loaded load(DemInput file, PicturePlan plan, boolean fileStatistics, FileStatistics streamed)
-            throws IOException {
+    static Loaded load(DemInput file, PicturePlan plan, boolean fileStatistics, FileStatistics streamed,
+                       RenderProgress progress) throws IOException {
         Window.Cells read = plan.read();
         DemInfo info = plan.info();
-        LoadedDem loaded = DemReader.load(file, new ReadRequest(read, plan.decimation()));
+        LoadedDem loaded = DemReader.load(file, new ReadRequest(read, plan.decimation()), progress);
         Dem read0 = loaded.dem();
         Dem onBody = read0.withGeometry(plan.measured(read0.geometry().withDefaultEllipsoid(plan.body())));
         Dem dem = DemResampler.resample(onBody, plan.gridWidth(), plan.gridHeight());
@@ -258,16 +260,19 @@ final class DemLoader {
     /** {@link FileStatistics} of one file: streamed at most once. */
     static final class StreamedStatistics implements FileStatistics {
         private final DemInput file;
+        private final RenderProgress progress;
         private ElevationStatistics statistics;
 
-        StreamedStatistics(DemInput file) {
+        /** @param progress told of the rows streamed ({@link DemReader#statistics(DemInput, RenderProgress)}) */
+        StreamedStatistics(DemInput file, RenderProgress progress) {
             this.file = file;
+            this.progress = progress;
         }
 
         @Override
         public ElevationStatistics get() throws IOException {
             if (statistics == null) {
-                statistics = DemReader.statistics(file);
+                statistics = DemReader.statistics(file, progress);
             }
             return statistics;
         }

@@ -5,9 +5,17 @@ import io.github.jdem846.sun.SunPosition;
 
 /**
  * Hears what a {@link ReliefJob} does: progress of its stages, notices for the user, the end of each phase and the
- * sun it computed. All methods have empty defaults; progress may be called from worker threads. A picture rendered
- * in tiles reports one stage, named after the product's phase, counting the picture's pixels (a {@code long}: there
- * may be more than 2³¹), and only ever growing.
+ * sun it computed. All methods have empty defaults.
+ *
+ * <p>Progress ({@link #update}) comes stage after stage, as {@link RenderProgress} describes: {@code read} (rows of
+ * the grid read), {@code statistics} (rows of the whole file streamed, when a window's tint or shadows need the
+ * file's range), {@code shadows} (blocks of sweep lines or rows of rays), {@code shading} or {@code hillshade}
+ * (tiles), then {@code write} (rows written into the file; for a COG, the rows of every level) for
+ * {@link ReliefJob#runAndWrite}. Each stage reports at most a few hundred times, its {@code done} only growing up to
+ * {@code done == total}, possibly from worker threads (one call at a time per stage). A picture rendered in tiles
+ * reports {@code statistics}, then one stage named after the product's phase ("render", "hillshade", "tint",
+ * "shadows") counting the picture's pixels (a {@code long}: there may be more than 2³¹) as its tiles are read,
+ * rendered and written. Progress changes nothing in the picture.
  */
 public interface JobListener extends RenderProgress {
 

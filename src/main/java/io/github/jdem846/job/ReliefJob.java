@@ -270,12 +270,32 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         requireDrawable();
         Scene s = productScene();
         try (InputFile in = InputFile.open(input)) {
-            Planned planned = plan(in.input(), s);
+            Planned planned = plan(in.input(), s, listener);
             PicturePlan plan = planned.plan();
             InsufficientHeapException.requireFits(plan.gridCells(), plan.width(), plan.height(),
                     JobMemory.of(product, s).perPixel(), Runtime.getRuntime().maxMemory());
             return renderInMemory(in.input(), planned, s, listener);
+        } catch (IOException e) {
+            throw interruptedOr(e);
         }
+    }
+
+    /**
+     * An I/O failure of a thread that was interrupted meanwhile (a channel closed by the interrupt, a read or write
+     * stopped) as the {@link InterruptedException} it is, the interrupt status cleared; any other as it is.
+     *
+     * @param failure what a read or write threw
+     * @return the failure to rethrow, when it is not an interrupt
+     * @throws InterruptedException when the calling thread was interrupted
+     */
+    static IOException interruptedOr(IOException failure) throws InterruptedException {
+        if (Thread.interrupted() || failure instanceof java.io.InterruptedIOException
+                || failure instanceof java.nio.channels.ClosedByInterruptException) {
+            InterruptedException e = new InterruptedException("job cancelled");
+            e.initCause(failure);
+            throw e;
+        }
+        return failure;
     }
 
     /**
@@ -333,7 +353,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
             GeoReference geo = GeoReference.of(picture);
             return rgba ? ImageOutput.openRgba(file, picture.width(), picture.height(), geo, o)
                     : ImageOutput.openGray(file, picture.width(), picture.height(), geo, o);
-        }, result -> result.write(file, options), listener);
+        }, result -> result.write(file, options, listener), listener);
     }
 
     /** Opens the image a picture of {@code picture}'s size and place is written to. */
@@ -372,12 +392,14 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         Scene s = productScene();
         WriteResult written;
         try (InputFile in = InputFile.open(input)) {
-            Planned planned = plan(in.input(), s);
+            Planned planned = plan(in.input(), s, listener);
             if (fitsInMemory(planned.plan(), s)) {
                 written = whole.write(renderInMemory(in.input(), planned, s, listener));
             } else {
                 written = renderInTiles(in.input(), planned, s, sink, listener, layouts);
             }
+        } catch (IOException e) {
+            throw interruptedOr(e);
         }
         written.notices().forEach(listener::notice);
         listener.phaseDone("write");
@@ -389,14 +411,14 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     }
 
     /** Plans the read: the window with the halo the scene's stages need, from the file's header. */
-    private Planned plan(DemInput files, Scene s) throws IOException {
+    private Planned plan(DemInput files, Scene s, JobListener listener) throws IOException {
         DemLoader.Halo halo = s.hillshade() == null ? DemLoader.Halo.NONE : DemLoader.Halo.uniform(1);
         if (s.hasShadows()) {
             halo = halo.union(shadowHalo(s));
         }
         DemInfo read = DemReader.inspect(files).withDefaultEllipsoid(body.ellipsoid());
         DemInfo info = read.withGeometry(mercatorScale.apply(read.geometry()));
-        DemLoader.StreamedStatistics statistics = new DemLoader.StreamedStatistics(files);
+        DemLoader.StreamedStatistics statistics = new DemLoader.StreamedStatistics(files, listener);
         return new Planned(DemLoader.plan(info, body.ellipsoid(), window, size, halo, statistics), statistics);
     }
 
@@ -420,7 +442,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     /** Loads the picture's grid with its halo and renders it. */
     private ReliefResult renderInMemory(DemInput files, Planned planned, Scene s, JobListener listener)
             throws IOException, InterruptedException {
-        DemLoader.Loaded loaded = DemLoader.load(files, planned.plan(), needsStatistics(s), planned.statistics());
+        DemLoader.Loaded loaded = DemLoader.load(files, planned.plan(), needsStatistics(s), planned.statistics(),
+                listener);
         listener.phaseDone("read");
         for (String notice : loaded.info().notices()) {
             listener.notice(notice);

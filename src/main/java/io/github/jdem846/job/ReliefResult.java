@@ -6,6 +6,7 @@ import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.output.WriteResult;
 import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.render.RenderProgress;
 import io.github.jdem846.sun.SunPosition;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -76,13 +77,29 @@ public record ReliefResult(ReliefJob job, DemInfo source, GridGeometry geometry,
      * @throws IOException when the file cannot be written, or is a file of the input
      */
     public WriteResult write(Path file, WriteOptions options) throws IOException {
+        return write(file, options, RenderProgress.NONE);
+    }
+
+    /**
+     * {@link #write(Path, WriteOptions)}, telling {@code progress} the rows written (stage {@value
+     * RenderProgress#WRITE}, {@link ImageOutput#writeRgba(Path, int[], int, int, GeoReference, WriteOptions,
+     * RenderProgress)}); the bytes written do not depend on it.
+     *
+     * @param file     the image file (its extension chooses the format)
+     * @param options  how to write it
+     * @param progress told of the rows written, on the calling thread
+     * @return the files written
+     * @throws IOException when the file cannot be written, or is a file of the input
+     */
+    public WriteResult write(Path file, WriteOptions options, RenderProgress progress) throws IOException {
+        Objects.requireNonNull(progress, "progress");
         job.checkOutput(file, options);
         GeoReference geo = GeoReference.of(geometry);
         if (argb != null) {
-            return ImageOutput.writeRgba(file, argb, width(), height(), geo, options);
+            return ImageOutput.writeRgba(file, argb, width(), height(), geo, options, progress);
         }
         WriteOptions o = job.product() == Product.HILLSHADE && options.noData() == null ? options.withNoData(0)
                 : options;
-        return ImageOutput.writeGray(file, gray, width(), height(), geo, o);
+        return ImageOutput.writeGray(file, gray, width(), height(), geo, o, progress);
     }
 }

@@ -4,6 +4,7 @@ import io.github.jdem846.io.DemInput;
 import io.github.jdem846.io.LoadedDem;
 import io.github.jdem846.output.ImageSink;
 import io.github.jdem846.render.RenderProgress;
+import io.github.jdem846.render.StageProgress;
 import io.github.jdem846.shadow.CellWindow;
 import java.io.IOException;
 import java.io.InterruptedIOException;
@@ -12,7 +13,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * Renders a picture tile by tile ({@link TileLayout}) and hands it to an {@link ImageSink} one band of rows at a
@@ -20,7 +20,8 @@ import java.util.concurrent.atomic.AtomicLong;
  * all threads ({@link AreaRenderer}) and copied into the band; the band is appended once its last tile is done. At
  * most one tile, its piece of the grid and one band are held at once.
  *
- * <p>Progress is reported in pixels of the whole picture (a {@code long}: a picture may have more than 2³¹);
+ * <p>Progress is reported in pixels of the whole picture (a {@code long}: a picture may have more than 2³¹), within
+ * a tile as its stages advance, thinned ({@link StageProgress});
  * interrupting the calling thread stops the work between tiles or inside one, with {@link InterruptedException}.
  */
 final class TiledWriter {
@@ -95,7 +96,7 @@ final class TiledWriter {
         int[] argbBand = rgba ? new int[Math.multiplyExact(width, Math.min(th, height))] : null;
         byte[] grayBand = rgba ? null : new byte[Math.multiplyExact(width, Math.min(th, height))];
         long total = plan.pixels();
-        AtomicLong reported = new AtomicLong();
+        StageProgress progress = new StageProgress(listener, stage, total).start();
         Set<String> told = new LinkedHashSet<>();
         List<String> pending = new ArrayList<>(notices);
         long done = 0;
@@ -118,8 +119,8 @@ final class TiledWriter {
                 pending.clear();
                 long before = done;
                 long pixels = (long) bw * bh;
-                RenderProgress inTile = (s, d, t) -> report(listener, stage, reported,
-                        before + (t > 0 ? pixels * Math.min(d, t) / t : 0), total);
+                RenderProgress inTile = (s, d, t) -> progress.reached(before + (t > 0 ? pixels * Math.min(d, t) / t
+                        : 0));
                 AreaRenderer.Pixels p = renderer.render(loaded.dem(),
                         new CellWindow(tile.col() - region.col(), tile.row() - region.row(), bw, bh),
                         area.col() - region.col(), area.row() - region.row(), inTile);
@@ -131,7 +132,7 @@ final class TiledWriter {
                     }
                 }
                 done += pixels;
-                report(listener, stage, reported, done, total);
+                progress.reached(done);
             }
             if (rgba) {
                 sink.appendRgba(argbBand, bh);
@@ -157,19 +158,6 @@ final class TiledWriter {
                 throw ie;
             }
             throw e;
-        }
-    }
-
-    /**
-     * Reports {@code done} of {@code total} pixels unless as much was already reported (the workers of a tile
-     * report at once, and a tile's stages each count from 0), so that the listener hears progress only grow.
-     */
-    private static void report(JobListener listener, String stage, AtomicLong reported, long done, long total) {
-        synchronized (reported) {
-            if (done > reported.get()) {
-                reported.set(done);
-                listener.update(stage, done, total);
-            }
         }
     }
 }

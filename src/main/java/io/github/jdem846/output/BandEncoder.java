@@ -2,6 +2,7 @@ package io.github.jdem846.output;
 
 import java.io.Closeable;
 import java.io.IOException;
+import java.util.function.LongConsumer;
 
 /**
  * Encodes one image file band of rows after band of rows, north to south: {@link PngWriter}, {@link GeoTiffWriter}
@@ -22,6 +23,15 @@ interface BandEncoder extends Closeable {
      * @throws IllegalStateException when rows are missing
      */
     void finish() throws IOException;
+
+    /** @return the rows the encoder writes in all, for progress: the image's height, for a COG every level's */
+    long rowsToEncode();
+
+    /**
+     * From now on, tells {@code rows} how many rows each chunk written into the file held (a PNG segment, a TIFF
+     * strip, a COG tile row of any level), in order, on the thread that appends.
+     */
+    void onEncoded(LongConsumer rows);
 
     /** Releases the file and any scratch files, finished or not (an unfinished file is incomplete). */
     @Override

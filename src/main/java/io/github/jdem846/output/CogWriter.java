@@ -10,6 +10,7 @@ import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.LongConsumer;
 
 /**
  * A Cloud-Optimized GeoTIFF (COG), written band of rows after band of rows ({@link BandEncoder}): square tiles
@@ -67,6 +68,7 @@ final class CogWriter implements BandEncoder {
     private final OverviewPyramid pyramid;
     private final byte[] row;
     private boolean finished;
+    private LongConsumer encoded = rows -> { };
 
     /** One level: its size, its tile rows and the store of its tiles. */
     private final class Level {
@@ -87,8 +89,14 @@ final class CogWriter implements BandEncoder {
         /** The tiles of the tile rows a band completed, compressed a batch at a time and stored in order. */
         private void writeTiles(List<RowChunks.Chunk> ready) throws IOException {
             int batch = Batches.size(parallel, TILES_PER_BATCH_AND_PROCESSOR, MAX_TILES_PER_BATCH);
+            int[] stored = {0};
             Batches.run(ready.size() * tilesAcross, batch, parallel,
-                    i -> tile(ready.get(i / tilesAcross), i % tilesAcross), store::add);
+                    i -> tile(ready.get(i / tilesAcross), i % tilesAcross), tile -> {
+                        store.add(tile);
+                        if (++stored[0] % tilesAcross == 0) {
+                            encoded.accept(ready.get(stored[0] / tilesAcross - 1).rows());
+                        }
+                    });
         }
 
         /** Tile {@code tx} of a tile row: full size, zeros past the image's edges. */
@@ -216,6 +224,20 @@ final class CogWriter implements BandEncoder {
             }
         }
         finished = true;
+    }
+
+    @Override
+    public long rowsToEncode() {
+        long rows = 0;
+        for (Level level : levels) {
+            rows += level.height;
+        }
+        return rows;
+    }
+
+    @Override
+    public void onEncoded(LongConsumer rows) {
+        encoded = java.util.Objects.requireNonNull(rows, "rows");
     }
 
     /** Deletes the scratch files. */

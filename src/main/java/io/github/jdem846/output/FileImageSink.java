@@ -1,5 +1,7 @@
 package io.github.jdem846.output;
 
+import io.github.jdem846.render.RenderProgress;
+import io.github.jdem846.render.StageProgress;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -21,13 +23,14 @@ final class FileImageSink implements ImageSink {
     private final SidecarPlan plan;
     private final StagedFiles staged;
     private final BandEncoder encoder;
+    private final StageProgress progress;
     private int rows;
     private boolean failed;
     private boolean committed;
     private boolean closed;
 
     private FileImageSink(Path file, int width, int height, int samplesPerPixel, SidecarPlan plan,
-                          StagedFiles staged, BandEncoder encoder) {
+                          StagedFiles staged, BandEncoder encoder, StageProgress progress) {
         this.file = file;
         this.width = width;
         this.height = height;
@@ -35,6 +38,7 @@ final class FileImageSink implements ImageSink {
         this.plan = plan;
         this.staged = staged;
         this.encoder = encoder;
+        this.progress = progress;
     }
 
     /**
@@ -49,7 +53,20 @@ final class FileImageSink implements ImageSink {
     static FileImageSink open(Path file, int width, int height, int samplesPerPixel, int bitsPerSample,
                               GeoReference geo, WriteOptions options, Double noData, long classicLimit)
             throws IOException {
+        return open(file, width, height, samplesPerPixel, bitsPerSample, geo, options, noData, classicLimit,
+                RenderProgress.NONE);
+    }
+
+    /**
+     * As {@link #open(Path, int, int, int, int, GeoReference, WriteOptions, Double, long)}, telling {@code progress}
+     * the rows written (stage {@value RenderProgress#WRITE}: {@link BandEncoder#rowsToEncode()} in all, reported as
+     * the encoder writes its chunks and ended at the commit).
+     */
+    static FileImageSink open(Path file, int width, int height, int samplesPerPixel, int bitsPerSample,
+                              GeoReference geo, WriteOptions options, Double noData, long classicLimit,
+                              RenderProgress progress) throws IOException {
         Objects.requireNonNull(file, "file");
+        Objects.requireNonNull(progress, "progress");
         Objects.requireNonNull(options, "options");
         ImageFormat format = ImageFormat.of(file);
         if (width < 1 || height < 1) {
@@ -82,7 +99,9 @@ final class FileImageSink implements ImageSink {
                         : new GeoTiffWriter(temp, width, height, samplesPerPixel, bitsPerSample, geo, noData,
                                 options.parallelCompression(), classicLimit);
             };
-            return new FileImageSink(file, width, height, samplesPerPixel, plan, staged, encoder);
+            StageProgress rows = new StageProgress(progress, RenderProgress.WRITE, encoder.rowsToEncode()).start();
+            encoder.onEncoded(rows::add);
+            return new FileImageSink(file, width, height, samplesPerPixel, plan, staged, encoder, rows);
         } catch (IOException e) {
             staged.close();
             throw StagedFiles.withTarget(e, file);
@@ -185,6 +204,7 @@ final class FileImageSink implements ImageSink {
         try {
             encoder.finish();
             encoder.close();
+            progress.finish();
             sidecars = plan.stage(staged);
             staged.commit();
         } catch (IOException e) {

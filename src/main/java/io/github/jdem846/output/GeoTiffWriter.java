@@ -7,6 +7,7 @@ import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.List;
+import java.util.function.LongConsumer;
 
 /**
  * A small baseline TIFF 6.0 writer for the one case the renderer needs, band of rows after band of rows
@@ -49,6 +50,7 @@ final class GeoTiffWriter implements BandEncoder {
     private final long[] counts;
     private long position;
     private boolean finished;
+    private LongConsumer encoded = rows -> { };
 
     /**
      * Starts a GeoTIFF in {@code file} (created or truncated).
@@ -133,7 +135,18 @@ final class GeoTiffWriter implements BandEncoder {
             counts[s] = data.length;
             FileChannels.writeFully(channel, ByteBuffer.wrap(data), position);
             position += data.length;
+            encoded.accept(ready.get(next[0] - 1).rows());
         });
+    }
+
+    @Override
+    public long rowsToEncode() {
+        return strips.height();
+    }
+
+    @Override
+    public void onEncoded(LongConsumer rows) {
+        encoded = java.util.Objects.requireNonNull(rows, "rows");
     }
 
     /** A strip's rows, with the predictor for 8-bit samples, as one zlib stream. */

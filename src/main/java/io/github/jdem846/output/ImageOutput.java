@@ -1,5 +1,6 @@
 package io.github.jdem846.output;
 
+import io.github.jdem846.render.RenderProgress;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -47,7 +48,30 @@ public final class ImageOutput {
                                         WriteOptions options) throws IOException {
         Objects.requireNonNull(argb, "argb");
         Rasters.checkLength(argb.length, width, height);
-        return write(file, new Pixels.Argb(argb, width, height), geo, options, null);
+        return writeRgba(file, argb, width, height, geo, options, RenderProgress.NONE);
+    }
+
+    /**
+     * {@link #writeRgba(Path, int[], int, int, GeoReference, WriteOptions)}, telling {@code progress} the rows
+     * written (stage {@value RenderProgress#WRITE}: rows of every PNG segment, TIFF strip or COG tile row as it is
+     * written, for a COG every level's rows; it ends at its total once the file is complete). The bytes written do
+     * not depend on it.
+     *
+     * @param file     the target; {@code .png}, {@code .tif} or {@code .tiff}
+     * @param argb     non-premultiplied ARGB pixels, row-major, {@code width × height}
+     * @param width    pixels across
+     * @param height   pixels down
+     * @param geo      where the image lies on the ground, or {@code null}
+     * @param options  how to write
+     * @param progress told of the rows written, on the calling thread
+     * @return the files written and notices for the user
+     * @throws IOException naming the file when it cannot be written
+     */
+    public static WriteResult writeRgba(Path file, int[] argb, int width, int height, GeoReference geo,
+                                        WriteOptions options, RenderProgress progress) throws IOException {
+        Objects.requireNonNull(argb, "argb");
+        Rasters.checkLength(argb.length, width, height);
+        return write(file, new Pixels.Argb(argb, width, height), geo, options, null, progress);
     }
 
     /**
@@ -69,7 +93,28 @@ public final class ImageOutput {
                                         WriteOptions options) throws IOException {
         Objects.requireNonNull(gray, "gray");
         Rasters.checkLength(gray.length, width, height);
-        return write(file, new Pixels.Gray(gray, width, height), geo, options, options.noData());
+        return writeGray(file, gray, width, height, geo, options, RenderProgress.NONE);
+    }
+
+    /**
+     * {@link #writeGray(Path, byte[], int, int, GeoReference, WriteOptions)}, telling {@code progress} the rows
+     * written, as {@link #writeRgba(Path, int[], int, int, GeoReference, WriteOptions, RenderProgress)} does.
+     *
+     * @param file     the target; {@code .png}, {@code .tif} or {@code .tiff}
+     * @param gray     samples 0..255 as unsigned bytes, row-major, {@code width × height}
+     * @param width    pixels across
+     * @param height   pixels down
+     * @param geo      where the image lies on the ground, or {@code null}
+     * @param options  how to write
+     * @param progress told of the rows written, on the calling thread
+     * @return the files written and notices for the user
+     * @throws IOException naming the file when it cannot be written
+     */
+    public static WriteResult writeGray(Path file, byte[] gray, int width, int height, GeoReference geo,
+                                        WriteOptions options, RenderProgress progress) throws IOException {
+        Objects.requireNonNull(gray, "gray");
+        Rasters.checkLength(gray.length, width, height);
+        return write(file, new Pixels.Gray(gray, width, height), geo, options, options.noData(), progress);
     }
 
     /**
@@ -94,7 +139,8 @@ public final class ImageOutput {
                     + file + "'");
         }
         Rasters.checkLength(values.length, width, height);
-        return write(file, new Pixels.Float32(values, width, height), geo, options, options.noData());
+        return write(file, new Pixels.Float32(values, width, height), geo, options, options.noData(),
+                RenderProgress.NONE);
     }
 
     /**
@@ -115,7 +161,27 @@ public final class ImageOutput {
      */
     public static ImageSink openRgba(Path file, int width, int height, GeoReference geo, WriteOptions options)
             throws IOException {
-        return FileImageSink.open(file, width, height, 4, 8, geo, options, null, TiffDirectory.CLASSIC_LIMIT);
+        return openRgba(file, width, height, geo, options, RenderProgress.NONE);
+    }
+
+    /**
+     * {@link #openRgba(Path, int, int, GeoReference, WriteOptions)}, telling {@code progress} the rows written (stage
+     * {@value RenderProgress#WRITE}, as {@link #writeRgba(Path, int[], int, int, GeoReference, WriteOptions,
+     * RenderProgress)} does; it ends at the commit).
+     *
+     * @param file     the target; {@code .png}, {@code .tif} or {@code .tiff}
+     * @param width    pixels across
+     * @param height   pixels down
+     * @param geo      where the image lies on the ground, or {@code null}
+     * @param options  how to write
+     * @param progress told of the rows written, on the thread that appends
+     * @return the sink; close it (try-with-resources) whether or not it was committed
+     * @throws IOException naming the file when it or a sidecar cannot be written (checked before any pixel)
+     */
+    public static ImageSink openRgba(Path file, int width, int height, GeoReference geo, WriteOptions options,
+                                     RenderProgress progress) throws IOException {
+        return FileImageSink.open(file, width, height, 4, 8, geo, options, null, TiffDirectory.CLASSIC_LIMIT,
+                progress);
     }
 
     /**
@@ -134,9 +200,27 @@ public final class ImageOutput {
      */
     public static ImageSink openGray(Path file, int width, int height, GeoReference geo, WriteOptions options)
             throws IOException {
+        return openGray(file, width, height, geo, options, RenderProgress.NONE);
+    }
+
+    /**
+     * {@link #openGray(Path, int, int, GeoReference, WriteOptions)}, telling {@code progress} the rows written, as
+     * {@link #openRgba(Path, int, int, GeoReference, WriteOptions, RenderProgress)} does.
+     *
+     * @param file     the target; {@code .png}, {@code .tif} or {@code .tiff}
+     * @param width    pixels across
+     * @param height   pixels down
+     * @param geo      where the image lies on the ground, or {@code null}
+     * @param options  how to write
+     * @param progress told of the rows written, on the thread that appends
+     * @return the sink; close it (try-with-resources) whether or not it was committed
+     * @throws IOException naming the file when it or a sidecar cannot be written (checked before any pixel)
+     */
+    public static ImageSink openGray(Path file, int width, int height, GeoReference geo, WriteOptions options,
+                                     RenderProgress progress) throws IOException {
         Objects.requireNonNull(options, "options");
         return FileImageSink.open(file, width, height, 1, 8, geo, options, options.noData(),
-                TiffDirectory.CLASSIC_LIMIT);
+                TiffDirectory.CLASSIC_LIMIT, progress);
     }
 
     /**
@@ -222,9 +306,9 @@ public final class ImageOutput {
 
     /** The whole picture as one band. */
     private static WriteResult write(Path file, Pixels image, GeoReference geo, WriteOptions options,
-                                     Double noData) throws IOException {
+                                     Double noData, RenderProgress progress) throws IOException {
         try (FileImageSink sink = FileImageSink.open(file, image.width(), image.height(), image.samplesPerPixel(),
-                image.bitsPerSample(), geo, options, noData, TiffDirectory.CLASSIC_LIMIT)) {
+                image.bitsPerSample(), geo, options, noData, TiffDirectory.CLASSIC_LIMIT, progress)) {
             sink.append(image);
             return sink.commit();
         }

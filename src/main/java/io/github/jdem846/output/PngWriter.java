@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.LongConsumer;
 import java.util.zip.Adler32;
 import java.util.zip.CRC32;
 import java.util.zip.Deflater;
@@ -55,6 +56,7 @@ final class PngWriter implements BandEncoder {
     private final int batch;
     private long adler = 1;
     private boolean finished;
+    private LongConsumer encoded = rows -> { };
 
     /**
      * Starts a PNG on {@code stream}: writes the signature and the header at once, the rows as they are appended.
@@ -166,11 +168,22 @@ final class PngWriter implements BandEncoder {
         Batches.run(ready.size(), batch, parallel, i -> compress(ready.get(i)), s -> {
             idat.write(s.deflated, s.length);
             adler = combineAdler32(adler, s.adler32, s.inputLength);
+            encoded.accept(s.rows);
         });
     }
 
+    @Override
+    public long rowsToEncode() {
+        return segments.height();
+    }
+
+    @Override
+    public void onEncoded(LongConsumer rows) {
+        encoded = java.util.Objects.requireNonNull(rows, "rows");
+    }
+
     /** One segment's raw deflate data and the Adler-32 and length of its filtered rows. */
-    private record Segment(byte[] deflated, int length, long adler32, int inputLength) {
+    private record Segment(byte[] deflated, int length, long adler32, int inputLength, int rows) {
     }
 
     /** A segment's rows filtered and deflated on their own: a sync flush at the end, or the final block if last. */
@@ -201,7 +214,7 @@ final class PngWriter implements BandEncoder {
                     deflated = Arrays.copyOf(deflated, deflated.length * 2);
                 }
             }
-            return new Segment(Arrays.copyOf(deflated, length), length, adler.getValue(), n);
+            return new Segment(Arrays.copyOf(deflated, length), length, adler.getValue(), n, segment.rows());
         } finally {
             deflater.end();
         }

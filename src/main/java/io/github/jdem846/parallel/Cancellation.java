@@ -7,6 +7,7 @@ import java.util.concurrent.ForkJoinWorkerThread;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.IntConsumer;
 
 /**
  * The parts of one computation run on a {@link ForkJoinPool} for the calling thread, stopped when that thread is
@@ -39,12 +40,15 @@ public final class Cancellation {
     private final Part part;
     private final AtomicInteger next = new AtomicInteger();
     private final AtomicReference<Throwable> failure = new AtomicReference<>();
+    private final IntConsumer partsDone;
+    private int reported;
     private volatile boolean cancelled;
 
-    private Cancellation(Thread caller, int parts, Part part) {
+    private Cancellation(Thread caller, int parts, Part part, IntConsumer partsDone) {
         this.caller = caller;
         this.parts = parts;
         this.part = part;
+        this.partsDone = partsDone;
     }
 
     /** True once the work should stop: the calling thread was interrupted, or a part failed. */
@@ -58,9 +62,20 @@ public final class Cancellation {
      * @throws CancellationException when the calling thread is interrupted; its interrupt status stays set
      */
     public static void invokeAll(ForkJoinPool pool, int parts, Part part) {
+        invokeAll(pool, parts, part, null);
+    }
+
+    /**
+     * {@link #invokeAll(ForkJoinPool, int, Part)}, telling {@code partsDone} how many parts have returned (without
+     * being cancelled) after each one: from the worker threads, one at a time, the counts only growing.
+     *
+     * @param partsDone told the number of parts done so far, or {@code null}
+     * @throws CancellationException when the calling thread is interrupted; its interrupt status stays set
+     */
+    public static void invokeAll(ForkJoinPool pool, int parts, Part part, IntConsumer partsDone) {
         checkInterrupted();
         Thread caller = Thread.currentThread();
-        Cancellation c = new Cancellation(caller, parts, part);
+        Cancellation c = new Cancellation(caller, parts, part, partsDone);
         boolean callerWorks = pool == ForkJoinPool.commonPool()
                 || caller instanceof ForkJoinWorkerThread w && w.getPool() == pool;
         int helpers = Math.max(0, Math.min(parts - (callerWorks ? 1 : 0), pool.getParallelism()));
@@ -138,11 +153,19 @@ public final class Cancellation {
         for (int i = next.getAndIncrement(); i < parts && !isCancelled(); i = next.getAndIncrement()) {
             try {
                 part.run(i, this);
+                if (partsDone != null && !isCancelled()) {
+                    reportDone();
+                }
             } catch (Throwable t) {
                 failure.compareAndSet(null, t);
                 cancelled = true;
             }
         }
+    }
+
+    /** Tells the listener one more part is done, the counts in order. */
+    private synchronized void reportDone() {
+        partsDone.accept(++reported);
     }
 
     private static void awaitUninterruptibly(CountDownLatch latch) {

@@ -8,6 +8,7 @@ import io.github.jdem846.shade.HillshadeOptions;
 import io.github.jdem846.shade.IlluminationStage;
 import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.ShadowMask;
+import io.github.jdem846.shadow.ShadowProgress;
 import io.github.jdem846.tint.TintFunction;
 import java.util.List;
 import java.util.Objects;
@@ -99,7 +100,7 @@ public final class Renderer {
         int[] argb = new int[width * height];
         float[] values = dem.backingArray();
         int demWidth = dem.width();
-        new TileExecutor(pool, settings.tileSize()).forEachTile(width, height, "shading", progress,
+        new TileExecutor(pool, settings.tileSize()).forEachTile(width, height, RenderProgress.SHADING, progress,
                 (c0, r0, w, h) -> {
                     float[] dot = new float[w * h];
                     if (illumination != null) {
@@ -180,7 +181,8 @@ public final class Renderer {
                                  RenderProgress progress, IlluminatedTile sink) throws InterruptedException {
         requireInside(area, dem);
         try (WorkerPool workers = WorkerPool.of(settings)) {
-            new TileExecutor(workers.pool, settings.tileSize()).forEachTile(area.width(), area.height(), "hillshade",
+            new TileExecutor(workers.pool, settings.tileSize()).forEachTile(area.width(), area.height(),
+                    RenderProgress.HILLSHADE,
                     progress, (c0, r0, w, h) -> {
                         float[] tile = new float[w * h];
                         illuminate(dem, stage, light, area.col() + c0, area.row() + r0, w, h, tile);
@@ -285,14 +287,31 @@ public final class Renderer {
         if (!scene.hasShadows()) {
             return null;
         }
-        progress.update("shadows", 0, 1);
         ShadowMask mask;
         try {
-            mask = scene.shadows().computeWindow(dem, scene.shadowLight(), scene.shadowOptions(), pool, area);
+            mask = scene.shadows().computeWindow(dem, scene.shadowLight(), scene.shadowOptions(), pool, area,
+                    new ShadowStage(progress));
         } catch (CancellationException e) {
             throw TileExecutor.interrupted(e);
         }
-        progress.update("shadows", 1, 1);
         return mask.backingArray();
+    }
+
+    /** The shadow algorithm's blocks as the {@value RenderProgress#SHADOWS} stage, thinned ({@link StageProgress}). */
+    private static final class ShadowStage implements ShadowProgress {
+        private final RenderProgress progress;
+        private StageProgress stage;
+
+        ShadowStage(RenderProgress progress) {
+            this.progress = progress;
+        }
+
+        @Override
+        public synchronized void update(long done, long total) {
+            if (stage == null) {
+                stage = new StageProgress(progress, RenderProgress.SHADOWS, total).start();
+            }
+            stage.reached(done);
+        }
     }
 }

@@ -3,7 +3,6 @@ package io.github.jdem846.render;
 import io.github.jdem846.parallel.Cancellation;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * Runs one task per tile of a raster on a {@link ForkJoinPool}, reporting progress and stopping promptly when the
@@ -33,7 +32,8 @@ final class TileExecutor {
     }
 
     /**
-     * Runs {@code task} on every tile of a {@code width × height} raster and waits for all of them.
+     * Runs {@code task} on every tile of a {@code width × height} raster and waits for all of them, reporting
+     * {@code stage} in tiles ({@link StageProgress}).
      *
      * @throws InterruptedException if the calling thread is interrupted: tiles not yet started are skipped, the call
      *                              returns once the running ones have finished, and the interrupt status is cleared
@@ -42,11 +42,11 @@ final class TileExecutor {
             throws InterruptedException {
         TileGrid grid = new TileGrid(width, height, tileSize);
         int n = grid.count();
-        AtomicLong done = new AtomicLong();
+        StageProgress done = new StageProgress(progress, stage, n).start();
         try {
             Cancellation.invokeAll(pool, n, (index, cancel) -> {
                 task.run(grid.col0(index), grid.row0(index), grid.tileWidth(index), grid.tileHeight(index));
-                progress.update(stage, done.incrementAndGet(), n);
+                done.add(1);
             });
         } catch (CancellationException e) {
             throw interrupted(e);

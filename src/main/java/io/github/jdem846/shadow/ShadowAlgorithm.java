@@ -49,6 +49,53 @@ public enum ShadowAlgorithm {
      */
     public ShadowMask computeWindow(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
                                     CellWindow window) {
+        return computeWindow(dem, light, options, pool, window, ShadowProgress.NONE);
+    }
+
+    /**
+     * {@link #computeWindow(Dem, LightDirection, ShadowOptions, ForkJoinPool, CellWindow)}, telling {@code progress}
+     * how far it has come after each block of sweep lines or rows of rays (see {@link ShadowProgress}); a mask
+     * computed without tracing (no shadows, a sun at the zenith or below the horizon) reports 1 of 1.
+     *
+     * @param dem      the grid, the window and its halo
+     * @param light    the sun
+     * @param options  the shadow options
+     * @param pool     the pool the work is split across
+     * @param window   the cells whose shadow is computed
+     * @param progress told of the blocks done
+     * @return the mask of the window
+     */
+    public ShadowMask computeWindow(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
+                                    CellWindow window, ShadowProgress progress) {
+        Objects.requireNonNull(progress, "progress");
+        Finishing tracked = new Finishing(progress);
+        ShadowMask mask = computeTracked(dem, light, options, pool, window, tracked);
+        tracked.finish();
+        return mask;
+    }
+
+    /** Passes progress on and remembers its total, so that the computation can end at {@code done == total}. */
+    private static final class Finishing implements ShadowProgress {
+        private final ShadowProgress to;
+        private long total = 1;
+
+        Finishing(ShadowProgress to) {
+            this.to = to;
+        }
+
+        @Override
+        public synchronized void update(long done, long t) {
+            total = t;
+            to.update(done, t);
+        }
+
+        synchronized void finish() {
+            to.update(total, total);
+        }
+    }
+
+    private ShadowMask computeTracked(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
+                                      CellWindow window, ShadowProgress progress) {
         Objects.requireNonNull(dem, "dem");
         Objects.requireNonNull(light, "light");
         Objects.requireNonNull(options, "options");
@@ -77,12 +124,13 @@ public enum ShadowAlgorithm {
         switch (this) {
             case SWEEP -> {
                 if (options.softShadows()) {
-                    softSweep(dem, light, options, pool, window, out);
+                    softSweep(dem, light, options, pool, window, out, progress);
                 } else {
-                    hardSweep(dem, light, options, pool, window, out);
+                    hardSweep(dem, light, options, pool, window, out, progress);
                 }
             }
-            case MARCH, EXACT -> march(marcher(dem, new RayFrame(dem, light, options), options), window, out, pool);
+            case MARCH, EXACT -> march(marcher(dem, new RayFrame(dem, light, options), options), window, out, pool,
+                    progress);
             default -> throw new AssertionError(this);
         }
         Cancellation.checkInterrupted();                 // also during the soft sweep's work on this thread
@@ -96,14 +144,14 @@ public enum ShadowAlgorithm {
     static final int SOFT_SWEEP_LEVELS = 16;
 
     private static void hardSweep(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
-                                  CellWindow window, float[] out) {
+                                  CellWindow window, float[] out, ShadowProgress progress) {
         RayFrame frame = new RayFrame(dem, light, options);
         boolean bilinear = options.sampling() != Sampling.NEAREST;
         SunSweep sweep = new SunSweep(dem, frame, bilinear, bilinear && options.firstCellTest(), true,
                 options.terrainMinimum(), options.thinFeatures());
         int halo = window.width() == dem.width() && window.height() == dem.height() ? Integer.MAX_VALUE
                 : ShadowHalo.sweepSteps(frame, sweep.lowestFloor(), light, options);
-        sweep.run(window, halo, out, pool);
+        sweep.run(window, halo, out, pool, progress);
     }
 
     /**
@@ -118,15 +166,15 @@ public enum ShadowAlgorithm {
      * slope rather than from the steepest one. Error: at most about 2/(π·levels) ≈ 0.04 of the disk.
      */
     private static void softSweep(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
-                                  CellWindow window, float[] out) {
+                                  CellWindow window, float[] out, ShadowProgress progress) {
         ShadowOptions hard = options.withSoftShadows(false);
         double e = light.elevationDegrees();
         double r = options.sunDiameterDegrees() / 2;
         double[] levels = softLevels(e, r);
         int n = out.length;
-        int[] highestBlocked = highestBlockedInOneWalk(dem, light, hard, pool, window, levels);
+        int[] highestBlocked = highestBlockedInOneWalk(dem, light, hard, pool, window, levels, progress);
         if (highestBlocked == null) {
-            highestBlocked = highestBlockedLevelByLevel(dem, light, hard, pool, window, levels);
+            highestBlocked = highestBlockedLevelByLevel(dem, light, hard, pool, window, levels, progress);
         }
         for (int i = 0; i < n; i++) {
             if ((i & CELLS_PER_CALLER_CHECK - 1) == 0) {
@@ -167,6 +215,16 @@ public enum ShadowAlgorithm {
      */
     static int[] highestBlockedLevelByLevel(Dem dem, LightDirection light, ShadowOptions hard, ForkJoinPool pool,
                                             CellWindow window, double[] levels) {
+        return highestBlockedLevelByLevel(dem, light, hard, pool, window, levels, ShadowProgress.NONE);
+    }
+
+    /** Progress units of one level of the level-by-level soft sweep (its blocks done, scaled). */
+    private static final long PER_LEVEL = 1000;
+
+    private static int[] highestBlockedLevelByLevel(Dem dem, LightDirection light, ShadowOptions hard,
+                                                    ForkJoinPool pool, CellWindow window, double[] levels,
+                                                    ShadowProgress progress) {
+        long total = PER_LEVEL * levels.length;
         int n = window.width() * window.height();
         int[] highestBlocked = new int[n];
         java.util.Arrays.fill(highestBlocked, -1);
@@ -184,8 +242,11 @@ public enum ShadowAlgorithm {
                     level[i] = z == z ? 1f : 0f;
                 }
             } else {
-                hardSweep(dem, new LightDirection(light.azimuthDegrees(), a), hard, pool, window, level);
+                long before = PER_LEVEL * k;
+                hardSweep(dem, new LightDirection(light.azimuthDegrees(), a), hard, pool, window, level,
+                        (d, t) -> progress.update(before + PER_LEVEL * d / Math.max(1, t), total));
             }
+            progress.update(PER_LEVEL * (k + 1), total);
             boolean any = false;
             for (int i = 0; i < n; i++) {
                 if (level[i] > 0.5f) {
@@ -207,6 +268,12 @@ public enum ShadowAlgorithm {
      */
     static int[] highestBlockedInOneWalk(Dem dem, LightDirection light, ShadowOptions hard, ForkJoinPool pool,
                                          CellWindow window, double[] levels) {
+        return highestBlockedInOneWalk(dem, light, hard, pool, window, levels, ShadowProgress.NONE);
+    }
+
+    private static int[] highestBlockedInOneWalk(Dem dem, LightDirection light, ShadowOptions hard,
+                                                 ForkJoinPool pool, CellWindow window, double[] levels,
+                                                 ShadowProgress progress) {
         int first = 0;                                   // the first level above the horizon
         while (first < levels.length && levels[first] <= 0) {
             first++;
@@ -235,7 +302,7 @@ public enum ShadowAlgorithm {
                 : ShadowHalo.sweepSteps(frame, sweep.lowestFloor(), lowest, hard);
         int n = window.width() * window.height();
         int[] bits = new int[n];
-        sweep.runLevels(window, halo, tans, bits, pool);
+        sweep.runLevels(window, halo, tans, bits, pool, progress);
         // the level-by-level rule: stop at the first level that shades no cell (levels below the horizon shade
         // every valid cell; with none, every cell is −1 anyway) or at the zenith
         int union = 0;
@@ -318,10 +385,12 @@ public enum ShadowAlgorithm {
     /** Rays traced between two tests of {@link Cancellation#isCancelled()}: one ray is already many samples. */
     private static final int CELLS_PER_CHECK = 64;
 
-    private static void march(RayMarcher marcher, CellWindow win, float[] out, ForkJoinPool pool) {
+    private static void march(RayMarcher marcher, CellWindow win, float[] out, ForkJoinPool pool,
+                              ShadowProgress progress) {
         int rowsPerTask = Math.max(1, Math.min(16, win.height() / 64));
         int ww = win.width();
-        Cancellation.invokeAll(pool, (win.height() + rowsPerTask - 1) / rowsPerTask, (t, cancel) -> {
+        int tasks = (win.height() + rowsPerTask - 1) / rowsPerTask;
+        Cancellation.invokeAll(pool, tasks, (t, cancel) -> {
             for (int rr = t * rowsPerTask; rr < Math.min(win.height(), (t + 1) * rowsPerTask); rr++) {
                 for (int c = 0; c < ww; c++) {
                     if ((c & CELLS_PER_CHECK - 1) == 0 && cancel.isCancelled()) {
@@ -330,6 +399,6 @@ public enum ShadowAlgorithm {
                     out[rr * ww + c] = marcher.shade(win.col() + c, win.row() + rr);
                 }
             }
-        });
+        }, done -> progress.update(Math.min(win.height(), (long) done * rowsPerTask), win.height()));
     }
 }

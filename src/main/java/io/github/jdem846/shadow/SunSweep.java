@@ -96,6 +96,11 @@ final class SunSweep {
      * terrain up to {@code haloSteps} major steps upstream of the window (Integer.MAX_VALUE = the whole grid).
      */
     void run(CellWindow win, int haloSteps, float[] out, ForkJoinPool pool) {
+        run(win, haloSteps, out, pool, ShadowProgress.NONE);
+    }
+
+    /** {@link #run(CellWindow, int, float[], ForkJoinPool)}, telling {@code progress} the blocks of lines done. */
+    void run(CellWindow win, int haloSteps, float[] out, ForkJoinPool pool, ShadowProgress progress) {
         boolean lockstep = lockstepAllowed && g.bilinear && g.f.curvature == 0;
         BlockWork work;
         if (lockstep && g.uniform()) {
@@ -105,7 +110,7 @@ final class SunSweep {
         } else {
             work = reference::walk;
         }
-        forEachBlock(win, haloSteps, out, pool, work);
+        forEachBlock(win, haloSteps, out, pool, work, progress);
     }
 
     /** True when {@link #runLevels} can walk several sun elevations at once (the lockstep cases of {@link #run}). */
@@ -120,12 +125,13 @@ final class SunSweep {
      * samples do not depend on the elevation, only the running maxima do. {@code haloSteps} must cover the lowest
      * elevation. Only when {@link #canRunLevels()}.
      */
-    void runLevels(CellWindow win, int haloSteps, double[] tans, int[] bits, ForkJoinPool pool) {
+    void runLevels(CellWindow win, int haloSteps, double[] tans, int[] bits, ForkJoinPool pool,
+                   ShadowProgress progress) {
         if (!canRunLevels() || tans.length > 31) {
             throw new IllegalStateException("runLevels needs the lockstep case and at most 31 elevations");
         }
         LevelsWalk levels = new LevelsWalk(g, rule, tans);
-        forEachBlock(win, haloSteps, null, pool, inLockstep(block -> levels.walk(block, bits)));
+        forEachBlock(win, haloSteps, null, pool, inLockstep(block -> levels.walk(block, bits)), progress);
     }
 
     /** The lockstep walk {@code walk} of each block of lines that meets the window ({@link LockstepBlock}). */
@@ -149,7 +155,8 @@ final class SunSweep {
      * the caller is interrupted no further block starts ({@link Cancellation}; a block takes milliseconds, tens on
      * the widest grids, so the walks themselves, the hot loops, test nothing).
      */
-    private void forEachBlock(CellWindow win, int haloSteps, float[] out, ForkJoinPool pool, BlockWork work) {
+    private void forEachBlock(CellWindow win, int haloSteps, float[] out, ForkJoinPool pool, BlockWork work,
+                              ShadowProgress progress) {
         int ia = g.frameI(win.col(), win.row());
         int ib = g.frameI(win.colEnd() - 1, win.rowEnd() - 1);
         int ja = g.frameJ(win.col(), win.row());
@@ -166,6 +173,6 @@ final class SunSweep {
         Cancellation.invokeAll(pool, blocks, (b, cancel) -> {
             int from = kMin + b * LINES_PER_TASK;
             work.run(w, from, Math.min(kMax, from + LINES_PER_TASK - 1));
-        });
+        }, done -> progress.update(done, blocks));
     }
 }

@@ -1,6 +1,7 @@
 package io.github.jdem846.tiles;
 
 import io.github.jdem846.job.JobListener;
+import io.github.jdem846.render.StageProgress;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Path;
@@ -37,10 +38,9 @@ final class PyramidRun {
     TileReport execute(Path output, TileFormat format) throws IOException, InterruptedException {
         List<TileGroup> groups = plan.groups();
         Map<Integer, Long> written = new ConcurrentHashMap<>();
-        AtomicLong done = new AtomicLong();
         AtomicLong bytes = new AtomicLong();
         long all = plan.tileCount();
-        listener.update("tiles", 0, all);
+        StageProgress progress = new StageProgress(listener, "tiles", all).start();
         AtomicInteger threadNumber = new AtomicInteger();
         ExecutorService pool = Executors.newFixedThreadPool(Math.min(plan.job().execution().parallelism(),
                 Math.max(1, groups.size())), r -> {
@@ -58,7 +58,7 @@ final class PyramidRun {
                         written.merge(g.z(), 1L, Long::sum);
                         bytes.addAndGet(t.png().length);
                     }
-                    listener.update("tiles", done.addAndGet(g.size()), all);
+                    progress.add(g.size());
                     return null;
                 }));
             }

@@ -101,7 +101,8 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * does not exist yet or is empty. Everything is written to a hidden file or directory beside it first and
      * renamed into place at the end; a failure or an interrupt leaves nothing.
      *
-     * @param listener told of progress ("tiles", done, total), notices and the sun computed
+     * @param listener told of progress ("statistics": rows of the DEM streamed for its range, then "tiles": tiles
+     *                 done, of all), notices and the sun computed
      * @return what was written
      * @throws IOException              when the DEM cannot be read or the output not written (naming the file)
      * @throws IllegalArgumentException when the settings do not make sense for map tiles (a sun per tile, a fixed
@@ -113,7 +114,17 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
         Objects.requireNonNull(listener, "listener");
         requireTileable();
         TileFormat format = checkOutput(output);
-        TilePlan plan = TilePlan.prepare(this, listener);
+        TilePlan plan;
+        try {
+            plan = TilePlan.prepare(this, listener);
+        } catch (IOException e) {
+            if (Thread.interrupted()) {          // a read stopped by the interrupt, not a broken file
+                InterruptedException ie = new InterruptedException("tiles cancelled while reading");
+                ie.initCause(e);
+                throw ie;
+            }
+            throw e;
+        }
         try (TileSink sink = TileSink.open(output)) {
             TileReport report = new PyramidRun(plan, sink, listener).execute(output, format);
             listener.phaseDone("render");

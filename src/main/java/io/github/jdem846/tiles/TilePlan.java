@@ -73,7 +73,8 @@ public final class TilePlan {
      * Reads the DEM's headers and measures its elevation range (one pass over its cells): for the process that
      * hands out the groups.
      *
-     * @param listener told of the DEM's notices, the sun computed and the end of the "read" phase
+     * @param listener told of the DEM's notices, the rows of the file streamed for its range (stage "statistics"),
+     *                 the sun computed and the end of the "read" phase
      * @throws IOException              when the DEM cannot be read or holds no elevations (naming it)
      * @throws IllegalArgumentException when the job's settings do not make sense for map tiles ({@link
      *                                  TileJob#requireTileable()}) or the DEM's CRS is unknown
@@ -86,7 +87,7 @@ public final class TilePlan {
         for (String notice : info.notices()) {
             listener.notice(notice);
         }
-        ElevationStatistics range = DemReader.statistics(job.input());
+        ElevationStatistics range = DemReader.statistics(job.input(), listener);
         if (range.isEmpty()) {
             throw new IOException(info.source() + " holds no elevations (every cell is no-data)");
         }
