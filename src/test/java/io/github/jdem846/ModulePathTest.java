@@ -79,13 +79,10 @@ class ModulePathTest {
     private static final Path SAMPLE =
             Path.of("testdata/variants/bigtujunga_crop600x400_v04_int16_deflate_pred2_tile256.tif");
 
-    /** Jars of the tests and of the command line, which a library user does not have. */
-    private static final List<String> NOT_OF_THE_LIBRARY = List.of("test-classes", "surefire", "junit",
-            "opentest4j", "apiguardian", "picocli", "progressbar", "jline");
-
     @Test
     void aModuleThatRequiresTheLibraryRendersAndWrites(@TempDir Path dir) throws Exception {
-        List<String> modulePath = libraryModulePath();
+        List<String> modulePath = TestJvm.libraryModulePath(ReliefJob.class);
+        assertTrue(Files.exists(Path.of(modulePath.get(0), "module-info.class")), modulePath.get(0));
         Path src = dir.resolve("src/demo");
         Files.createDirectories(src.resolve("demo"));
         Files.writeString(src.resolve("module-info.java"), MODULE_INFO);
@@ -121,18 +118,5 @@ class ModulePathTest {
                 .run(JobListener.NONE);
         BufferedImage written = ImageIO.read(png.toFile());
         assertArrayEquals(here.argb(), written.getRGB(0, 0, here.width(), here.height(), null, 0, here.width()));
-    }
-
-    /** The main classes (an exploded module) and the runtime dependencies of the library. */
-    private static List<String> libraryModulePath() throws Exception {
-        String main = Path.of(ReliefJob.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
-        List<String> path = new ArrayList<>(List.of(main));
-        for (String e : TestJvm.entries()) {
-            if (!e.equals(main) && e.endsWith(".jar") && NOT_OF_THE_LIBRARY.stream().noneMatch(e::contains)) {
-                path.add(e);
-            }
-        }
-        assertTrue(Files.exists(Path.of(main, "module-info.class")), main + " holds the module descriptor");
-        return path;
     }
 }
