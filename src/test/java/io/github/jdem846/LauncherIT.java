@@ -17,8 +17,9 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * The distribution's launcher, {@code bin/jdem846} of the unpacked {@code jdem846-<version>-dist.zip}, on the JDK
- * that runs the tests (its {@code JAVA_HOME}): it runs {@code lib/jdem846-cli.jar}, makes a class-data archive in
- * {@code $XDG_CACHE_HOME/jdem846} on the first command that does work, and loads the CLI's classes from it after.
+ * that runs the tests (its {@code JAVA_HOME}): it runs {@code lib/jdem846-cli.jar} and, on JDK 19 and later, makes
+ * a class-data archive in {@code $XDG_CACHE_HOME/jdem846} on the first command that does work and loads the CLI's
+ * classes from it after.
  */
 class LauncherIT {
 
@@ -52,6 +53,10 @@ class LauncherIT {
 
         List<Path> made = archives(cache);
         int feature = Runtime.version().feature();
+        if (feature < 19) {
+            assertEquals(List.of(), made, "JDK 17 and 18 start with the JDK's own archive only");
+            return;
+        }
         assertEquals(1, made.size(), made.toString());
         assertTrue(made.get(0).getFileName().toString().startsWith("jdem846-" + feature + "-"), made.toString());
         assertTrue(Files.size(made.get(0)) > 100_000, "an archive of the classes loaded");
