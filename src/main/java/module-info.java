@@ -4,9 +4,9 @@
  * cast shadows, the sun's position).
  *
  * <p>Exported: the packages whose public types a library user handles. Not exported: the format readers
- * ({@code io.geotiff}, {@code io.esri}, {@code io.source}) and the command line ({@code cli}), which runs from the
- * self-contained {@code jdem846-cli.jar} on the class path, and {@code parallel} (how stages share a pool and are
- * cancelled). Apache SIS and GeoAPI are read transitively, since
+ * ({@code io.geotiff}, {@code io.esri}, {@code io.source}), {@code internal} and {@code parallel} (how stages share a
+ * pool and are cancelled). The command line is not part of this module: it is built from its own source root into
+ * the self-contained {@code jdem846-cli.jar}. Apache SIS and GeoAPI are read transitively, since
  * {@link io.github.jdem846.geo.CrsInfo#sis()} hands out a GeoAPI {@code CoordinateReferenceSystem}.
  */
 // requires-automatic: TwelveMonkeys has no module-info; module: the name ends in digits (jdem846)
@@ -38,12 +38,4 @@ module io.github.jdem846 {
     requires com.twelvemonkeys.imageio.core;
     // NREL SPA sun positions
     requires net.e175.klaus.solarpositioning;
-
-    // The command line only: optional at run time, so library users need neither. The CLI runs from
-    // jdem846-cli.jar on the class path, where this descriptor is not read.
-    requires static info.picocli;
-    requires static me.tongfei.progressbar;
-    // the CLI's --verbose phase times (CPU and GC time)
-    requires java.management;
-    opens io.github.jdem846.cli to info.picocli;
 }

@@ -32,7 +32,7 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A library user on the module path: a module that {@code requires io.github.jdem846} and nothing else, compiled and
  * run with the main classes and the runtime dependencies on {@code --module-path} (no {@code --add-modules}, no
- * CLI-only jar). It renders README's windowed, real-sun, shadowed job on the bundled sample and writes it with its
+ * CLI-only jar). It renders README's windowed, real-sun, shadowed job on a test DEM and writes it with its
  * sidecars, which loads Apache SIS, GeoAPI, the sun's position and the image writers; the picture equals the same
  * job run here.
  */
@@ -61,7 +61,7 @@ class ModulePathTest {
 
             public final class Main {
                 public static void main(String[] args) throws Exception {
-                    ReliefResult relief = ReliefJob.ofSample()
+                    ReliefResult relief = ReliefJob.of(Path.of(args[1]))
                             .withWindow(Window.world(380000, 3790000, 400000, 3800000))
                             .withSize(OutputSize.width(400))
                             .withSun(Sun.at(ZonedDateTime.parse("2024-06-21T06:30-07:00[America/Los_Angeles]")))
@@ -75,13 +75,14 @@ class ModulePathTest {
             }
             """;
 
-    /** Jars of the tests and of the command line, which a library user does not have. */
-    private static final List<String> NOT_OF_THE_LIBRARY = List.of("test-classes", "surefire", "junit",
-            "opentest4j", "apiguardian", "picocli", "progressbar", "jline");
+    /** The DEM the CLI draws without FILE (its bundled sample is a copy of it). */
+    private static final Path SAMPLE =
+            Path.of("testdata/variants/bigtujunga_crop600x400_v04_int16_deflate_pred2_tile256.tif");
 
     @Test
     void aModuleThatRequiresTheLibraryRendersAndWrites(@TempDir Path dir) throws Exception {
-        List<String> modulePath = libraryModulePath();
+        List<String> modulePath = TestJvm.libraryModulePath(ReliefJob.class);
+        assertTrue(Files.exists(Path.of(modulePath.get(0), "module-info.class")), modulePath.get(0));
         Path src = dir.resolve("src/demo");
         Files.createDirectories(src.resolve("demo"));
         Files.writeString(src.resolve("module-info.java"), MODULE_INFO);
@@ -98,7 +99,7 @@ class ModulePathTest {
         Path png = dir.resolve("relief.png");
         List<String> command = new ArrayList<>(List.of(TestJvm.java(), "-Djava.awt.headless=true",
                 "--module-path", dir.resolve("mods") + File.pathSeparator + String.join(File.pathSeparator, modulePath),
-                "-m", "demo/demo.Main", png.toString()));
+                "-m", "demo/demo.Main", png.toString(), SAMPLE.toString()));
         ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
         builder.environment().remove("SIS_DATA");
         Process p = builder.start();
@@ -109,7 +110,7 @@ class ModulePathTest {
         assertEquals("rendered 400x278 in module io.github.jdem846", output);
         assertTrue(Files.exists(dir.resolve("relief.pgw")) && Files.exists(dir.resolve("relief.prj")), "sidecars");
 
-        ReliefResult here = ReliefJob.ofSample()
+        ReliefResult here = ReliefJob.of(SAMPLE)
                 .withWindow(Window.world(380000, 3790000, 400000, 3800000))
                 .withSize(OutputSize.width(400))
                 .withSun(Sun.at(ZonedDateTime.parse("2024-06-21T06:30-07:00[America/Los_Angeles]")))
@@ -117,18 +118,5 @@ class ModulePathTest {
                 .run(JobListener.NONE);
         BufferedImage written = ImageIO.read(png.toFile());
         assertArrayEquals(here.argb(), written.getRGB(0, 0, here.width(), here.height(), null, 0, here.width()));
-    }
-
-    /** The main classes (an exploded module) and the runtime dependencies of the library. */
-    private static List<String> libraryModulePath() throws Exception {
-        String main = Path.of(ReliefJob.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
-        List<String> path = new ArrayList<>(List.of(main));
-        for (String e : TestJvm.entries()) {
-            if (!e.equals(main) && e.endsWith(".jar") && NOT_OF_THE_LIBRARY.stream().noneMatch(e::contains)) {
-                path.add(e);
-            }
-        }
-        assertTrue(Files.exists(Path.of(main, "module-info.class")), main + " holds the module descriptor");
-        return path;
     }
 }

@@ -17,10 +17,7 @@ import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.render.RenderProgress;
 import io.github.jdem846.render.StageProgress;
 import java.io.IOException;
-import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.Objects;
 
 /**
@@ -38,10 +35,6 @@ import java.util.Objects;
  * refused before anything opens it (a read could block forever).
  */
 public final class DemReader {
-
-    /** Resource name of the bundled sample DEM (a 600×400 crop of SRTM 30 m, Big Tujunga, California). */
-    public static final String SAMPLE_RESOURCE =
-            "/io/github/jdem846/sample/bigtujunga_crop600x400_v04_int16_deflate_pred2_tile256.tif";
 
     private DemReader() {
     }
@@ -418,42 +411,6 @@ public final class DemReader {
                     (src, part, outRow0) -> BlockReader.read(src, part, 1, noData, (row, v) -> rows.add(1)));
             rows.finish();
             return stats;
-        }
-    }
-
-    /**
-     * Reads the bundled sample DEM (see {@link #SAMPLE_RESOURCE}).
-     *
-     * @return the grid
-     * @throws IOException if the sample cannot be copied out of the jar
-     */
-    public static Dem readSample() throws IOException {
-        return loadSample(ReadRequest.FULL).dem();
-    }
-
-    /**
-     * Reads the bundled sample DEM with its header information.
-     *
-     * @param request the window, the decimation and the memory limit
-     * @return the grid with the header
-     * @throws IOException if the sample cannot be copied out of the jar
-     */
-    public static LoadedDem loadSample(ReadRequest request) throws IOException {
-        Path tmp = Files.createTempFile("jdem846-sample-", ".tif");
-        try {
-            try (InputStream in = DemReader.class.getResourceAsStream(SAMPLE_RESOURCE)) {
-                if (in == null) {
-                    throw new IOException("the bundled sample " + SAMPLE_RESOURCE + " is missing from the jar");
-                }
-                Files.copy(in, tmp, StandardCopyOption.REPLACE_EXISTING);
-            }
-            LoadedDem loaded = load(tmp, request);
-            String name = "bundled sample " + SAMPLE_RESOURCE.substring(SAMPLE_RESOURCE.lastIndexOf('/') + 1);
-            DemInfo i = loaded.info();
-            return new LoadedDem(new DemInfo(name, i.format(), i.dataType(), i.bands(), i.geometry(),
-                    i.declaredNoData(), i.notices()), loaded.dem(), loaded.sourceStatistics());
-        } finally {
-            Files.deleteIfExists(tmp);
         }
     }
 

@@ -50,7 +50,7 @@ import java.util.Objects;
  * same result. Interrupting the calling thread stops a run with {@link InterruptedException}.
  *
  * @param input     the DEM file (GeoTIFF, GridFloat, ESRI ASCII, BIL, SRTM HGT) or files read as one grid, or
- *                  {@code null} for the bundled sample DEM
+ *                  {@code null} for a job that only renders grids already in memory ({@link #run(Dem, JobListener)})
  * @param product   what to make
  * @param scene     the stages and their settings; its light is replaced by {@code sun}'s. For {@link
  *                  Product#HILLSHADE} only its hillshade method and options count, for {@link Product#TINT} only
@@ -87,7 +87,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     /**
      * A job that measures Web Mercator cells on the ground ({@link MercatorScale#GROUND}).
      *
-     * @param input     the DEM file or files, or {@code null} for the bundled sample DEM
+     * @param input     the DEM file or files, or {@code null} for grids already in memory only
      * @param product   what to make
      * @param scene     the stages and their settings
      * @param window    the part of the DEM to draw, or {@code null} for all of it
@@ -106,7 +106,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
      * A job with the automatic memory budget (half the heap's maximum) that measures Web Mercator cells on the
      * ground.
      *
-     * @param input     the DEM file or files, or {@code null} for the bundled sample DEM
+     * @param input     the DEM file or files, or {@code null} for grids already in memory only
      * @param product   what to make
      * @param scene     the stages and their settings
      * @param window    the part of the DEM to draw, or {@code null} for all of it
@@ -140,15 +140,6 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     public static ReliefJob of(DemInput dem) {
         return new ReliefJob(dem, Product.RELIEF, Scene.defaults(), null, OutputSize.FULL, Sun.ORIGINAL_DEFAULT,
                 Body.EARTH, MercatorScale.GROUND, RenderSettings.defaults(), 0);
-    }
-
-    /**
-     * The bundled sample DEM (Big Tujunga, California, 600 × 400 cells) with the original's defaults.
-     *
-     * @return the job, to be refined with the {@code with…} methods
-     */
-    public static ReliefJob ofSample() {
-        return of((DemInput) null);
     }
 
     /**
@@ -269,12 +260,13 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         Objects.requireNonNull(listener, "listener");
         requireDrawable();
         Scene s = productScene();
-        try (InputFile in = InputFile.open(input)) {
-            Planned planned = plan(in.input(), s, listener);
+        DemInput in = requireInput();
+        try {
+            Planned planned = plan(in, s, listener);
             PicturePlan plan = planned.plan();
             InsufficientHeapException.requireFits(plan.gridCells(), plan.width(), plan.height(),
                     JobMemory.of(product, s).perPixel(), Runtime.getRuntime().maxMemory());
-            return renderInMemory(in.input(), planned, s, listener);
+            return renderInMemory(in, planned, s, listener);
         } catch (IOException e) {
             throw interruptedOr(e);
         }
@@ -377,6 +369,15 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         return runAndWrite(sink, whole, listener, TileLayout::choose);
     }
 
+    /** The input files; a job made without them ({@code input} null) only renders grids in memory. */
+    private DemInput requireInput() {
+        if (input == null) {
+            throw new IllegalStateException("this job has no DEM file: make it with ReliefJob.of(path), or render a"
+                    + " Dem in memory with run(dem, listener)");
+        }
+        return input;
+    }
+
     /** Chooses how a picture is cut into tiles: {@link TileLayout#choose}, or smaller tiles for tests. */
     @FunctionalInterface
     interface LayoutChooser {
@@ -391,12 +392,13 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         requireDrawable();
         Scene s = productScene();
         WriteResult written;
-        try (InputFile in = InputFile.open(input)) {
-            Planned planned = plan(in.input(), s, listener);
+        DemInput in = requireInput();
+        try {
+            Planned planned = plan(in, s, listener);
             if (fitsInMemory(planned.plan(), s)) {
-                written = whole.write(renderInMemory(in.input(), planned, s, listener));
+                written = whole.write(renderInMemory(in, planned, s, listener));
             } else {
-                written = renderInTiles(in.input(), planned, s, sink, listener, layouts);
+                written = renderInTiles(in, planned, s, sink, listener, layouts);
             }
         } catch (IOException e) {
             throw interruptedOr(e);

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.jdem846.io.DemInput;
 import io.github.jdem846.geo.CrsInfo;
 import io.github.jdem846.geo.Ellipsoid;
 import io.github.jdem846.geo.WebMercator;
@@ -74,7 +75,7 @@ class WebMercatorScaleTest {
                 }
             }
             Dem plane = Dem.ofNormalized(z, mercator(w, 3, cell, latitude), Double.NaN);
-            ReliefJob hillshade = ReliefJob.ofSample().withProduct(Product.HILLSHADE)
+            ReliefJob hillshade = ReliefJob.of((DemInput) null).withProduct(Product.HILLSHADE)
                     .withScene(HORN).withSun(Sun.fixed(270, sun)).withExecution(TWO_THREADS);
             byte[] onGround = hillshade.run(plane, JobListener.NONE).gray();
             byte[] onMap = hillshade.withMercatorScale(MercatorScale.MAP).run(plane, JobListener.NONE).gray();
@@ -167,7 +168,7 @@ class WebMercatorScaleTest {
                     z[r * w + wall] = (float) height;
                 }
                 Dem dem = Dem.ofNormalized(z, mercator(w, h, cell, latitude), Double.NaN);
-                ReliefJob mask = ReliefJob.ofSample().withProduct(Product.SHADOWS)
+                ReliefJob mask = ReliefJob.of((DemInput) null).withProduct(Product.SHADOWS)
                         .withScene(Scene.defaults().withShadows(algorithm)).withSun(Sun.fixed(90, 10))
                         .withExecution(TWO_THREADS);
                 double groundCells = length / (cell * eastWestScale(latitude));

@@ -36,7 +36,7 @@ class TiffReferenceDecodeTest {
     static List<Path> tiffs() throws IOException {
         List<Path> files = new ArrayList<>();
         for (String dir : List.of("testdata/dem", "testdata/variants", "testdata/formats",
-                "src/main/resources/io/github/jdem846/sample")) {
+                "src/cli/resources/io/github/jdem846/sample")) {
             try (Stream<Path> s = Files.list(Path.of(dir))) {
                 s.filter(p -> p.toString().endsWith(".tif"))
                         .filter(p -> !p.getFileName().toString().matches(".*_(zstd|cint16|rotated)\\.tif"))

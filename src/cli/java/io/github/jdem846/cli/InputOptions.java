@@ -100,7 +100,7 @@ public final class InputOptions {
      */
     ReliefJob job(Product product) throws IOException {
         DemInput in = input();
-        return (in != null ? ReliefJob.of(in) : ReliefJob.ofSample()).withProduct(product).withWindow(window)
+        return ReliefJob.of(in != null ? in : BundledSample.extract()).withProduct(product).withWindow(window)
                 .withSize(size()).withBody(body());
     }
 

@@ -6,7 +6,6 @@ import io.github.jdem846.geo.LatLon;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.LoadedDem;
-import io.github.jdem846.io.ReadRequest;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.sun.Body;
 import io.github.jdem846.sun.Observer;
@@ -77,7 +76,7 @@ public final class InfoCommand implements Callable<Integer> {
         }
         DemInput input = resolved.input();
         if (input == null) {
-            LoadedDem sample = DemReader.loadSample(ReadRequest.FULL);
+            LoadedDem sample = BundledSample.load();
             info = sample.info();
             stats = sample.dem().statistics();
         } else {

@@ -1,0 +1,98 @@
+package io.github.jdem846;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The distribution's launcher, {@code bin/jdem846} of the unpacked {@code jdem846-<version>-dist.zip}, on the JDK
+ * that runs the tests (its {@code JAVA_HOME}): it runs {@code lib/jdem846-cli.jar} and, on JDK 19 and later, makes
+ * a class-data archive in {@code $XDG_CACHE_HOME/jdem846} on the first command that does work and loads the CLI's
+ * classes from it after.
+ */
+class LauncherIT {
+
+    private static final Path DIST = Path.of(System.getProperty("jdem846.distDir"));
+
+    @Test
+    void theDistributionHoldsTheLauncherTheJarAndTheTexts() {
+        for (String f : List.of("bin/jdem846", "bin/jdem846.bat", "lib/jdem846-cli.jar", "LICENSE", "README.md")) {
+            assertTrue(Files.isRegularFile(DIST.resolve(f)), f);
+        }
+        assertTrue(Files.isExecutable(DIST.resolve("bin/jdem846")), "bin/jdem846 is executable");
+    }
+
+    @Test
+    void versionRunsTheJarAndMakesNoArchive(@TempDir Path cache) throws Exception {
+        Run run = launch(cache, Map.of(), "--version");
+        assertEquals(0, run.status(), run.out());
+        assertTrue(run.out().startsWith("jdem846 "), run.out());
+        assertTrue(run.out().contains("Java " + System.getProperty("java.version")), "on JAVA_HOME's JVM: " + run.out());
+        assertEquals(List.of(), archives(cache));
+    }
+
+    @Test
+    void theFirstCommandMakesTheArchiveAndTheNextLoadsTheCliFromIt(@TempDir Path cache) throws Exception {
+        Run first = launch(cache, Map.of(), "info", "--json");
+        assertEquals(0, first.status(), first.out());
+        // stdout is the JSON alone: no class-data sharing message
+        String json = first.out().strip();
+        assertTrue(json.startsWith("{\"file\": \"bundled sample ") && json.endsWith("}") && json.lines().count() == 1,
+                json);
+
+        List<Path> made = archives(cache);
+        int feature = Runtime.version().feature();
+        if (feature < 19) {
+            assertEquals(List.of(), made, "JDK 17 and 18 start with the JDK's own archive only");
+            return;
+        }
+        assertEquals(1, made.size(), made.toString());
+        assertTrue(made.get(0).getFileName().toString().startsWith("jdem846-" + feature + "-"), made.toString());
+        assertTrue(Files.size(made.get(0)) > 100_000, "an archive of the classes loaded");
+
+        Run next = launch(cache, Map.of("JDEM846_OPTS", "-Xlog:class+load=info"), "info", "--json");
+        assertEquals(0, next.status(), next.out());
+        assertTrue(next.out().lines().anyMatch(l -> l.endsWith(" io.github.jdem846.cli.Main source: shared objects"
+                + " file (top)")), next.out().lines().filter(l -> l.contains("cli.Main")).toList().toString());
+        assertEquals(made, archives(cache), "the same archive, used");
+    }
+
+    private record Run(int status, String out) {
+    }
+
+    private static Run launch(Path cache, Map<String, String> env, String... args) throws Exception {
+        List<String> command = new ArrayList<>(List.of(DIST.resolve("bin/jdem846").toString()));
+        command.addAll(List.of(args));
+        ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
+        builder.environment().put("JAVA_HOME", System.getProperty("java.home"));
+        builder.environment().put("XDG_CACHE_HOME", cache.toString());
+        builder.environment().remove("JDEM846_OPTS");
+        builder.environment().remove("JDEM846_CDS");
+        builder.environment().putAll(env);
+        Process p = builder.start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "finished");
+        return new Run(p.exitValue(), out);
+    }
+
+    private static List<Path> archives(Path cache) throws IOException {
+        Path dir = cache.resolve("jdem846");
+        if (!Files.isDirectory(dir)) {
+            return List.of();
+        }
+        try (Stream<Path> files = Files.list(dir)) {
+            return files.filter(f -> f.toString().endsWith(".jsa")).sorted().toList();
+        }
+    }
+}
