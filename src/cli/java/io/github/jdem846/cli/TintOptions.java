@@ -6,9 +6,13 @@ import io.github.jdem846.tint.TintScale;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.Iterator;
 import java.util.Locale;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.TypeConversionException;
 import picocli.CommandLine.Spec;
 
 /** {@code --tint NAME|FILE} with gdaldem's {@code --exact-color}/{@code --nearest-color}. */
@@ -33,9 +37,10 @@ public final class TintOptions {
             description = "Colour file: the nearest entry's colour, no interpolation (gdaldem -nearest_color_entry).")
     boolean nearest;
 
-    @Option(names = "--tint-scale", paramLabel = "SCALE", defaultValue = "linear",
+    @Option(names = "--tint-scale", paramLabel = "SCALE", defaultValue = "linear", converter = ScaleName.class,
+            completionCandidates = ScaleName.class,
             description = "How a percent ramp spreads the DEM's range over its colours (the original's elevation "
-                    + "scalers): ${COMPLETION-CANDIDATES}; logarithmic gives low ground more colours, exponential and "
+                    + "scalers): linear, logarithmic, exponential or cubic; logarithmic gives low ground more colours, exponential and "
                     + "cubic high ground. Default: ${DEFAULT-VALUE}.")
     TintScale scale;
 
@@ -95,6 +100,25 @@ public final class TintOptions {
             return ColorRamp.named(tint);
         } catch (IllegalArgumentException e) {
             throw Usage.invalid(command, e.getMessage(), "--tint");
+        }
+    }
+
+    /** {@code --tint-scale}'s names, in any case, whatever the command line's enum setting (tiles runs alone too). */
+    static final class ScaleName implements ITypeConverter<TintScale>, Iterable<String> {
+        @Override
+        public TintScale convert(String value) {
+            for (TintScale scale : TintScale.values()) {
+                if (scale.name().equalsIgnoreCase(value.strip())) {
+                    return scale;
+                }
+            }
+            throw new TypeConversionException("'" + value + "' is not a tint scale: give linear, logarithmic, "
+                    + "exponential or cubic");
+        }
+
+        @Override
+        public Iterator<String> iterator() {
+            return Arrays.stream(TintScale.values()).map(s -> s.name().toLowerCase(Locale.ROOT)).iterator();
         }
     }
 }
