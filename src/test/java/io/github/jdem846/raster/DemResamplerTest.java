@@ -105,13 +105,14 @@ class DemResamplerTest {
                 int[] cols = DemResampler.sourceSpan(97, size[0], c, w);
                 int[] rows = DemResampler.sourceSpan(61, size[1], r, h);
                 Dem part = full.crop(cols[0], rows[0], cols[1] - cols[0], rows[1] - rows[0]);
-                float[] region = DemResampler.resampleRegion(part, cols[0], rows[0], 97, 61, size[0], size[1],
-                        c, r, w, h);
+                Dem region = DemResampler.resampleRegion(part, cols[0], rows[0], 97, 61, size[0], size[1],
+                        c, r, w, h, whole.geometry().window(c, r, w, h), Upsampling.CATMULL_ROM);
                 for (int y = 0; y < h; y++) {
                     for (int x = 0; x < w; x++) {
                         assertEquals(Float.floatToIntBits(whole.get(c + x, r + y)),
-                                Float.floatToIntBits(region[y * w + x]), size[0] + "×" + size[1] + " at "
+                                Float.floatToIntBits(region.get(x, y)), size[0] + "×" + size[1] + " at "
                                         + (c + x) + "," + (r + y));
+                        assertEquals(whole.coverage(c + x, r + y), region.coverage(x, y));
                     }
                 }
             }
