@@ -5,9 +5,13 @@ package io.github.jdem846.raster;
  * instead of computing at full size and shrinking the picture.
  *
  * <p>Shrinking is an area-weighted box filter: each output cell is the mean of the input cells it overlaps,
- * weighted by overlap area, over valid cells only (NaN when all of them are no-data). Enlarging is bilinear between
- * cell centres, edges clamped; a no-data corner makes the output cell no-data only when it carries the largest
- * weight, otherwise the valid corners are renormalised.
+ * weighted by overlap area, over valid cells only (NaN when all of them are no-data). Enlarging interpolates
+ * between cell centres ({@link Upsampling}, by default {@link #DEFAULT_UPSAMPLING}) and anti-aliases the edges of
+ * no-data: each output cell gets a coverage, the share of it that is data ({@link Dem#coverage}), from the bilinear
+ * interpolation of "is data" (1 or 0 at each cell centre) steepened so that its 0.5 line, a smooth curve around
+ * the data, is crossed in about one output cell; an output cell whose coverage is 0 is no-data. Mixed scales (one
+ * axis shrinking, the other growing) average along the one and interpolate bilinearly along the other, edges
+ * clamped; a no-data corner then makes the output cell no-data only when it carries the largest weight.
  */
 public final class DemResampler {
 
@@ -15,7 +19,7 @@ public final class DemResampler {
     }
 
     /** The interpolation of enlargements unless told otherwise (docs/scale.md says why). */
-    public static final Upsampling DEFAULT_UPSAMPLING = Upsampling.MONOTONE_CUBIC;
+    public static final Upsampling DEFAULT_UPSAMPLING = Upsampling.CLAMPED_CATMULL_ROM;
 
     /** Most cells of a resampled grid: the longest Java array. */
     static final long MAX_CELLS = Integer.MAX_VALUE - 8L;
@@ -124,9 +128,11 @@ public final class DemResampler {
         // output cells per input cell along the slower axis: the coverage's 0.5 line is crossed in about one cell
         double steepness = 1 / Math.max(sx, sy);
         for (int r = r0; r < r0 + h; r++) {
-            double y = Math.max(0, Math.min(src.height() - 1, (r + 0.5) * sy - 0.5));
+            double yc = (r + 0.5) * sy - 0.5;
+            double y = Math.max(0, Math.min(src.height() - 1, yc));
             for (int c = c0; c < c0 + w; c++) {
-                double x = Math.max(0, Math.min(src.width() - 1, (c + 0.5) * sx - 0.5));
+                double xc = (c + 0.5) * sx - 0.5;
+                double x = Math.max(0, Math.min(src.width() - 1, xc));
                 int i = (r - r0) * w + c - c0;
                 double share = dataShare(src, x, y);
                 float alpha = (float) Math.max(0, Math.min(1, (share - 0.5) * steepness + 0.5));
@@ -135,7 +141,7 @@ public final class DemResampler {
                 if (alpha == 0) {
                     values[i] = Float.NaN;
                 } else if (upsampling != Upsampling.BILINEAR) {
-                    values[i] = Bicubic.at(src::get, src.width(), src.height(), x, y, upsampling);
+                    values[i] = Bicubic.at(src::get, src.width(), src.height(), xc, yc, upsampling);
                 } else {
                     values[i] = bilinearOfData(src, x, y);
                 }

@@ -2,7 +2,9 @@ package io.github.jdem846.raster;
 
 /**
  * How a DEM is enlarged when a picture has more pixels than the DEM has cells (docs/scale.md, "Pictures larger than
- * the DEM"): the surface the stages then read at the picture's resolution.
+ * the DEM"): the surface the stages then read at the picture's resolution. Beyond the grid's outer cell centres
+ * each goes on linearly; next to no-data (a corner of the inner 2 × 2 missing) the cubics are bilinear over the
+ * corners that are data.
  */
 public enum Upsampling {
 
@@ -13,20 +15,24 @@ public enum Upsampling {
     BILINEAR,
 
     /**
-     * Catmull-Rom bicubic (the cubic convolution with a = −0.5) between cell centres, beyond the grid's edge and
-     * next to no-data extended linearly: it passes through the cells, keeps planes planes, and its slope is
-     * continuous across cell edges, so hillshade and shadow edges are smooth. Next to a no-data cell (inner 2 × 2
-     * not all data) it is bilinear over the cells that are data. It overshoots next to steep steps: between two cells
-     * at −1 m beside a 50 m drop on either side it rises to +5 m.
+     * Catmull-Rom bicubic (the cubic convolution with a = −0.5): it passes through the cells, keeps planes planes,
+     * and its slope is continuous across cell edges, so hillshade and shadow edges are smooth. It overshoots beside
+     * steep steps: between two cells at −1 m with a 50 m drop on either side it rises to +5 m, an island the
+     * cells do not have.
      */
     CATMULL_ROM,
 
     /**
+     * {@link #CATMULL_ROM} kept within the lowest and highest of the 4 × 4 cells it reads: the same surface wherever
+     * it stays within them (nearly everywhere on real terrain), without its overshoot beyond them. The default
+     * ({@link DemResampler#DEFAULT_UPSAMPLING}).
+     */
+    CLAMPED_CATMULL_ROM,
+
+    /**
      * Monotone bicubic: cubic Hermite pieces along x, then along y, whose tangent at a cell centre is the harmonic
-     * mean of the slopes on either side, or 0 at a local extremum (Fritsch and Butland's monotone cubic). Between
-     * two cells it stays within their values, so it adds no peak, pit or sea-level crossing that the cells do not
-     * have, keeps planes planes, and its slope is continuous across cell edges. Next to no-data it is bilinear over
-     * the cells that are data, as {@link #CATMULL_ROM}. The default ({@link DemResampler#DEFAULT_UPSAMPLING}).
+     * mean of the slopes on either side, or 0 at a local extremum (Fritsch and Butland's monotone cubic). It never
+     * overshoots, but it flattens every ridge and valley that crosses a row or a column of cells.
      */
     MONOTONE_CUBIC
 }
