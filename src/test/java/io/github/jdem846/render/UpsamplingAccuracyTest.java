@@ -80,26 +80,34 @@ class UpsamplingAccuracyTest {
         return new Error(Math.sqrt(sum / n), (double) differ / n);
     }
 
+    /**
+     * Measured (docs/scale.md): at 8× bilinear 36.4, Catmull-Rom 33.5, clamped 33.5, monotone 35.4 gray levels;
+     * shadows differ on 10.0, 9.0, 9.0, 9.0 % of pixels, and with the default on 5.3 % at 4×, 2.4 % at 2×.
+     */
     @Test
     void smoothSurfacesComeCloserToTheRealHillshadeAndShadowsConverge() throws InterruptedException {
         Reference ref = new Reference(real(TestDems.BIG_TUJUNGA));
         Error bilinear = error(ref, 8, Upsampling.BILINEAR);
         Error catmullRom = error(ref, 8, Upsampling.CATMULL_ROM);
-        Error monotone = error(ref, 8, Upsampling.MONOTONE_CUBIC);
-        System.out.printf(Locale.ROOT, "8x: bilinear %s%n   catmull-rom %s%n   monotone %s%n", bilinear, catmullRom,
-                monotone);
-        assertTrue(monotone.hillshadeRms() < bilinear.hillshadeRms(), monotone + " vs " + bilinear);
-        assertTrue(catmullRom.hillshadeRms() < bilinear.hillshadeRms(), catmullRom + " vs " + bilinear);
-        double previous = 1;
-        for (int f : new int[] {8, 4, 2}) {
-            Error e = error(ref, f, Upsampling.MONOTONE_CUBIC);
-            System.out.printf(Locale.ROOT, "monotone %dx: %s%n", f, e);
-            assertTrue(e.shadowDisagreement() < previous, f + "×: " + e + ", coarser: " + previous);
+        Error chosen = error(ref, 8, DemResampler.DEFAULT_UPSAMPLING);
+        assertTrue(chosen.hillshadeRms() < 0.95 * bilinear.hillshadeRms(), chosen + " vs " + bilinear);
+        assertTrue(chosen.hillshadeRms() < 1.01 * catmullRom.hillshadeRms(), chosen + " vs " + catmullRom);
+        assertTrue(chosen.shadowDisagreement() < bilinear.shadowDisagreement(), chosen + " vs " + bilinear);
+        double previous = chosen.shadowDisagreement();
+        for (int f : new int[] {4, 2}) {
+            Error e = error(ref, f, DemResampler.DEFAULT_UPSAMPLING);
+            assertTrue(e.shadowDisagreement() < 0.75 * previous, f + "×: " + e + ", twice coarser: " + previous);
             previous = e.shadowDisagreement();
         }
+        assertTrue(previous < 0.03, "2×: shadows differ on " + previous);
     }
 
-    /** Prints the table of docs/scale.md: every method at 2×, 4× and 8× on two real DEMs. */
+    /**
+     * Prints the table of docs/scale.md: every method at 2×, 4× and 8× on two real DEMs.
+     *
+     * @param args none
+     * @throws InterruptedException never (no interrupt)
+     */
     public static void main(String[] args) throws InterruptedException {
         for (String name : new String[] {TestDems.BIG_TUJUNGA, TestDems.JACKSBORO}) {
             Reference ref = new Reference(real(name));
