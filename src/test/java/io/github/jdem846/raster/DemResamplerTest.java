@@ -132,7 +132,7 @@ class DemResamplerTest {
 
     @Test
     void catmullRomOvershootsAShoalIntoAnIslandAndTheClampedOneDoesNot() {
-        // between x = 2 and 3 the cubic with neighbours at −50 peaks at (−50·−1/16·2 + −1·9/16·2) = +5.125 m
+        // between x = 2 and 3, neighbours at −50: up to 2·(−50·−1/16) + 2·(−1·9/16) = +5.125 m
         Dem plain = DemResampler.resample(shoal(), 48, 32, Upsampling.CATMULL_ROM);
         Dem clamped = DemResampler.resample(shoal(), 48, 32, Upsampling.CLAMPED_CATMULL_ROM);
         Dem monotone = DemResampler.resample(shoal(), 48, 32, Upsampling.MONOTONE_CUBIC);
