@@ -22,9 +22,11 @@ import java.util.Objects;
  * Reads exactly the part of a DEM file a picture needs: the window (or the whole grid) plus a halo of cells that
  * the stages read around it, at the output resolution. Shrinking reads a decimated grid (box average, only the
  * blocks needed are decoded) and finishes with an area-weighted resample to the exact size, so no stage ever runs
- * at full resolution for a smaller picture. The read is planned from the header first ({@link #plan}); the grid
- * planned is then loaded whole ({@link #load(DemInput, PicturePlan, boolean, FileStatistics)}) or piece by piece
- * for a picture rendered in tiles ({@link #loadRegion}), with the same values.
+ * at full resolution for a smaller picture; a larger picture reads the cells it covers and enlarges them with a
+ * smooth interpolation ({@link DemResampler#DEFAULT_UPSAMPLING}), with anti-aliased no-data edges. The read is
+ * planned from the header first ({@link #plan}); the grid planned is then loaded whole ({@link #load(DemInput,
+ * PicturePlan, boolean, FileStatistics)}) or piece by piece for a picture rendered in tiles ({@link #loadRegion}),
+ * with the same values.
  */
 final class DemLoader {
 
@@ -106,6 +108,12 @@ final class DemLoader {
         }
     }
 
+    /**
+     * Cells read around the window of an enlarged picture: the interpolation's two on either side and one for the
+     * stages' own halo of one pixel, so that the window's pixels are those of the whole file's picture.
+     */
+    static final int ENLARGEMENT_HALO = 3;
+
     private DemLoader() {
     }
 
@@ -173,7 +181,13 @@ final class DemLoader {
         int[] px = size.pixelsFor(win.width(), win.height());
         double fx = (double) win.width() / px[0];
         double fy = (double) win.height() / px[1];
-        int[] h = halo.cells(statistics, info, win);
+        int[] h = halo.cells(statistics, info, win).clone();
+        if (fx < 1 && fy < 1) {
+            // an enlargement interpolates from two cells on either side, and its stages read one pixel further
+            for (int i = 0; i < 4; i++) {
+                h[i] = Math.max(h[i], ENLARGEMENT_HALO);
+            }
+        }
         // Halo in source cells, rounded up to whole output pixels so the window keeps pixel-aligned edges.
         int west = haloCells(h[0], fx, win.col());
         int north = haloCells(h[1], fy, win.row());
@@ -250,11 +264,10 @@ final class DemLoader {
         int r1 = (int) Math.min(read.row() + (long) read.height(), read.row() + (long) rows[1] * d);
         LoadedDem read0 = DemReader.load(file, new ReadRequest(Window.cells(c0, r0, c1 - c0, r1 - r0), d));
         Dem part = read0.dem();
-        float[] values = DemResampler.resampleRegion(part, cols[0], rows[0], plan.decimatedWidth(),
+        Dem resampled = DemResampler.resampleRegion(part, cols[0], rows[0], plan.decimatedWidth(),
                 plan.decimatedHeight(), plan.gridWidth(), plan.gridHeight(), region.col(), region.row(),
-                region.width(), region.height());
-        return new LoadedDem(read0.info(), Dem.ofNormalized(values, geometry, part.declaredNoData()),
-                read0.sourceStatistics());
+                region.width(), region.height(), geometry, DemResampler.DEFAULT_UPSAMPLING);
+        return new LoadedDem(read0.info(), resampled, read0.sourceStatistics());
     }
 
     /** {@link FileStatistics} of one file: streamed at most once. */

@@ -4,8 +4,8 @@ import io.github.jdem846.render.Scene;
 
 /**
  * The heap a job's product holds, in bytes per pixel and per grid cell, to decide between rendering in memory and
- * in tiles and to size the tiles ({@link TileLayout}). What it counts: the grid read (float32 per cell, and the
- * decimated read a resampled grid is made from), the layers the stages hold per pixel (the shadowed fraction,
+ * in tiles and to size the tiles ({@link TileLayout}). What it counts: the grid read (float32 per cell, another for
+ * an enlarged grid's coverage, and the decimated read a resampled grid is made from), the layers the stages hold per pixel (the shadowed fraction,
  * the soft shadows' levels) and the picture itself; one band of rows of the picture when rendered in tiles. Not
  * counted: the readers' and encoders' buffers and the JVM's own, which is why the default budget is half the heap.
  *
@@ -27,10 +27,11 @@ record JobMemory(int perPixel, int outputBytes) {
 
     /**
      * Bytes of a grid of {@code cells} at the picture's resolution, read through a decimated read of {@code
-     * readCells} cells when it is resampled from one (0 otherwise): both are held while it is made.
+     * readCells} cells when it is resampled from one (0 otherwise): both are held while it is made. An enlarged
+     * grid also holds a coverage per cell (anti-aliased no-data edges).
      */
-    static long gridBytes(long cells, long readCells) {
-        return Float.BYTES * (cells + readCells);
+    static long gridBytes(long cells, long readCells, boolean enlarged) {
+        return Float.BYTES * ((enlarged ? 2 : 1) * cells + readCells);
     }
 
     /** Bytes of rendering {@code pixels} at once from a grid of {@code gridBytes}. */

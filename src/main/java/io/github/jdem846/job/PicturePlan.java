@@ -62,6 +62,11 @@ record PicturePlan(DemInfo info, Ellipsoid body, Window.Cells window, Window.Cel
         return gridWidth != decimatedWidth() || gridHeight != decimatedHeight();
     }
 
+    /** @return true when the grid has more cells than the read on both axes: an enlarged grid, with a coverage */
+    boolean enlarged() {
+        return gridWidth > decimatedWidth() && gridHeight > decimatedHeight();
+    }
+
     /** @return true when the grid is the file's cells themselves: one pixel per cell */
     boolean fullResolution() {
         return decimation == 1 && !resampled();

@@ -433,7 +433,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     /** The heap the picture takes rendered at once: its grid (and the read it is resampled from), layers, pixels. */
     private long inMemoryBytes(PicturePlan plan, Scene s) {
         long read = plan.resampled() ? (long) plan.decimatedWidth() * plan.decimatedHeight() : 0;
-        return JobMemory.of(product, s).render(JobMemory.gridBytes(plan.gridCells(), read), plan.pixels());
+        return JobMemory.of(product, s).render(JobMemory.gridBytes(plan.gridCells(), read, plan.enlarged()),
+                plan.pixels());
     }
 
     /** Whether the scene needs the whole file's statistics: a tint's range, the cast shadows' lowest terrain. */

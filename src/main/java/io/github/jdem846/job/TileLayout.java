@@ -104,7 +104,7 @@ record TileLayout(int tileWidth, int tileHeight, int west, int north, int east, 
         if (cells > PicturePlan.MAX_ARRAY || read > PicturePlan.MAX_ARRAY || band > PicturePlan.MAX_ARRAY) {
             return null;
         }
-        long bytes = JobMemory.gridBytes(cells, read) + (long) needs.perPixel() * tw * th
+        long bytes = JobMemory.gridBytes(cells, read, plan.enlarged()) + (long) needs.perPixel() * tw * th
                 + (long) needs.outputBytes() * band;
         return new TileLayout(tw, th, halo[0], halo[1], halo[2], halo[3], bytes);
     }

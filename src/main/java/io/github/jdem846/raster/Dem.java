@@ -10,6 +10,9 @@ import java.util.Objects;
  * value for reporting and for writing. Stages therefore test {@code Float.isNaN}. Min, max and the valid count
  * exclude no-data and are computed once, lazily and thread-safely.
  *
+ * <p>A grid enlarged from a coarser one may also carry a coverage per cell ({@link #coverage}): the share of the
+ * cell that is data, between 0 and 1, with which the edges of no-data are anti-aliased.
+ *
  * <p>Instances are immutable as long as nobody writes into {@link #backingArray()}.
  */
 public final class Dem {
@@ -17,6 +20,8 @@ public final class Dem {
     private final float[] values;
     private final GridGeometry geometry;
     private final double declaredNoData;
+    /** The share of each cell that is data, or null: 1 for every cell that is data, 0 for no-data. */
+    private final float[] coverage;
     private volatile ElevationStatistics statistics;
 
     /**
@@ -33,6 +38,12 @@ public final class Dem {
     }
 
     private Dem(float[] values, GridGeometry geometry, double declaredNoData, boolean alreadyNormalized) {
+        this(values, geometry, declaredNoData, alreadyNormalized, null);
+    }
+
+    private Dem(float[] values, GridGeometry geometry, double declaredNoData, boolean alreadyNormalized,
+                float[] coverage) {
+        this.coverage = coverage;
         this.values = Objects.requireNonNull(values, "values");
         this.geometry = Objects.requireNonNull(geometry, "geometry");
         long expected = (long) geometry.width() * geometry.height();
@@ -169,9 +180,44 @@ public final class Dem {
             throw new IllegalArgumentException("geometry " + g.width() + "×" + g.height() + " does not fit a "
                     + width() + "×" + height() + " DEM");
         }
-        Dem d = ofNormalized(values, g, declaredNoData);
+        Dem d = new Dem(values, g, declaredNoData, true, coverage);
         d.statistics = statistics;
         return d;
+    }
+
+    /**
+     * This DEM with a coverage per cell (an enlarged grid's anti-aliased no-data edges).
+     *
+     * @param shares the share of each cell that is data, 0 to 1, row-major (not copied); 0 where a cell is
+     *               no-data
+     * @return the DEM with that coverage
+     * @throws IllegalArgumentException when the array is not one value per cell
+     */
+    public Dem withCoverage(float[] shares) {
+        if (shares.length != values.length) {
+            throw new IllegalArgumentException("expected " + values.length + " coverage values, got "
+                    + shares.length);
+        }
+        Dem d = new Dem(values, geometry, declaredNoData, true, shares);
+        d.statistics = statistics;
+        return d;
+    }
+
+    /**
+     * The share of a cell that is data: from {@link #withCoverage} when given, else 1 for data and 0 for no-data.
+     *
+     * @param col column
+     * @param row row
+     * @return 0 to 1
+     */
+    public float coverage(int col, int row) {
+        int i = row * width() + col;
+        return coverage != null ? coverage[i] : Float.isNaN(values[i]) ? 0 : 1;
+    }
+
+    /** @return true when the DEM carries a coverage of its own ({@link #withCoverage}) */
+    public boolean hasCoverage() {
+        return coverage != null;
     }
 
     /**
@@ -189,10 +235,14 @@ public final class Dem {
                     + ") is not inside " + width() + "×" + height());
         }
         float[] out = new float[w * h];
+        float[] shares = coverage == null ? null : new float[w * h];
         for (int r = 0; r < h; r++) {
             System.arraycopy(values, (row + r) * width() + col, out, r * w, w);
+            if (shares != null) {
+                System.arraycopy(coverage, (row + r) * width() + col, shares, r * w, w);
+            }
         }
-        return ofNormalized(out, geometry.window(col, row, w, h), declaredNoData);
+        return new Dem(out, geometry.window(col, row, w, h), declaredNoData, true, shares);
     }
 
     @Override

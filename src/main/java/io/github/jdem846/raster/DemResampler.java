@@ -5,30 +5,52 @@ package io.github.jdem846.raster;
  * instead of computing at full size and shrinking the picture.
  *
  * <p>Shrinking is an area-weighted box filter: each output cell is the mean of the input cells it overlaps,
- * weighted by overlap area, over valid cells only (NaN when all of them are no-data). Enlarging is bilinear between
- * cell centres, edges clamped; a no-data corner makes the output cell no-data only when it carries the largest
- * weight, otherwise the valid corners are renormalised.
+ * weighted by overlap area, over valid cells only (NaN when all of them are no-data). Enlarging interpolates
+ * between cell centres ({@link Upsampling}, by default {@link #DEFAULT_UPSAMPLING}) and anti-aliases the edges of
+ * no-data: each output cell gets a coverage, the share of it that is data ({@link Dem#coverage}), from the bilinear
+ * interpolation of "is data" (1 or 0 at each cell centre) steepened so that its 0.5 line, a smooth curve around
+ * the data, is crossed in about one output cell; an output cell whose coverage is 0 is no-data. Mixed scales (one
+ * axis shrinking, the other growing) average along the one and interpolate bilinearly along the other, edges
+ * clamped; a no-data corner then makes the output cell no-data only when it carries the largest weight.
  */
 public final class DemResampler {
 
     private DemResampler() {
     }
 
+    /** The interpolation of enlargements unless told otherwise (docs/scale.md says why). */
+    public static final Upsampling DEFAULT_UPSAMPLING = Upsampling.CLAMPED_CATMULL_ROM;
+
     /** Most cells of a resampled grid: the longest Java array. */
     static final long MAX_CELLS = Integer.MAX_VALUE - 8L;
 
     /**
-     * {@code dem} resampled to {@code width × height} cells (returned as is when the size already matches).
+     * {@code dem} resampled to {@code width × height} cells (returned as is when the size already matches), enlarged
+     * (if it is) by {@link #DEFAULT_UPSAMPLING}.
      *
      * @throws IllegalArgumentException unless the size is at least 1×1 and at most {@link #MAX_CELLS} cells
      */
     public static Dem resample(Dem dem, int width, int height) {
+        return resample(dem, width, height, DEFAULT_UPSAMPLING);
+    }
+
+    /**
+     * {@code dem} resampled to {@code width × height} cells, enlarged (if it is) by {@code upsampling}.
+     *
+     * @param dem        the grid
+     * @param width      columns after, ≥ 1
+     * @param height     rows after, ≥ 1
+     * @param upsampling the interpolation of an enlargement
+     * @return the resampled grid ({@code dem} itself when the size already matches)
+     * @throws IllegalArgumentException unless the size is at least 1×1 and at most {@link #MAX_CELLS} cells
+     */
+    public static Dem resample(Dem dem, int width, int height, Upsampling upsampling) {
         requireSize(width, height);
         if (width == dem.width() && height == dem.height()) {
             return dem;
         }
-        float[] values = resampleRegion(dem, 0, 0, dem.width(), dem.height(), width, height, 0, 0, width, height);
-        return new Dem(values, resampledGeometry(dem.geometry(), width, height), dem.declaredNoData());
+        return resampleRegion(dem, 0, 0, dem.width(), dem.height(), width, height, 0, 0, width, height,
+                resampledGeometry(dem.geometry(), width, height), upsampling);
     }
 
     /**
@@ -66,11 +88,14 @@ public final class DemResampler {
      * @param row        first row wanted
      * @param w          columns wanted
      * @param h          rows wanted
-     * @return the cells wanted, row-major
+     * @param geometry   the geometry of the cells wanted ({@code w × h})
+     * @param upsampling the interpolation of an enlargement
+     * @return the cells wanted, with their coverage when enlarged
      * @throws IllegalArgumentException when the sizes are not positive or the cells are outside the resampled grid
      */
-    public static float[] resampleRegion(Dem part, int partCol, int partRow, int fullWidth, int fullHeight,
-                                         int width, int height, int col, int row, int w, int h) {
+    public static Dem resampleRegion(Dem part, int partCol, int partRow, int fullWidth, int fullHeight,
+                                     int width, int height, int col, int row, int w, int h, GridGeometry geometry,
+                                     Upsampling upsampling) {
         requireSize(width, height);
         int c0 = col;
         int r0 = row;
@@ -82,13 +107,89 @@ public final class DemResampler {
         double sx = (double) fullWidth / width;
         double sy = (double) fullHeight / height;
         float[] values = new float[w * h];
+        if (sx < 1 && sy < 1) {
+            return enlarge(src, sx, sy, c0, r0, w, h, geometry, upsampling);
+        }
         for (int r = r0; r < r0 + h; r++) {
             for (int c = c0; c < c0 + w; c++) {
                 values[(r - r0) * w + c - c0] = (sx >= 1 && sy >= 1) ? boxMean(src, c, r, sx, sy)
                         : sample(src, (c + 0.5) * sx - 0.5, (r + 0.5) * sy - 0.5, sx, sy, c, r);
             }
         }
-        return values;
+        return Dem.ofNormalized(values, geometry, part.declaredNoData());
+    }
+
+    /** The enlarged cells with their coverage (none kept when every cell is whole data or none). */
+    private static Dem enlarge(Source src, double sx, double sy, int c0, int r0, int w, int h, GridGeometry geometry,
+                               Upsampling upsampling) {
+        float[] values = new float[w * h];
+        float[] coverage = new float[w * h];
+        boolean partial = false;
+        // output cells per input cell along the slower axis: the coverage's 0.5 line is crossed in about one cell
+        double steepness = 1 / Math.max(sx, sy);
+        for (int r = r0; r < r0 + h; r++) {
+            double yc = (r + 0.5) * sy - 0.5;
+            double y = Math.max(0, Math.min(src.height() - 1, yc));
+            for (int c = c0; c < c0 + w; c++) {
+                double xc = (c + 0.5) * sx - 0.5;
+                double x = Math.max(0, Math.min(src.width() - 1, xc));
+                int i = (r - r0) * w + c - c0;
+                double share = dataShare(src, x, y);
+                float alpha = (float) Math.max(0, Math.min(1, (share - 0.5) * steepness + 0.5));
+                coverage[i] = alpha;
+                partial |= alpha > 0 && alpha < 1;
+                if (alpha == 0) {
+                    values[i] = Float.NaN;
+                } else if (upsampling != Upsampling.BILINEAR) {
+                    values[i] = Bicubic.at(src::get, src.width(), src.height(), xc, yc, upsampling);
+                } else {
+                    values[i] = bilinearOfData(src, x, y);
+                }
+            }
+        }
+        Dem dem = Dem.ofNormalized(values, geometry, src.part().declaredNoData());
+        return partial ? dem.withCoverage(coverage) : dem;
+    }
+
+    /** The bilinear interpolation of "is data" at (x, y), inside the grid. */
+    private static double dataShare(Source dem, double x, double y) {
+        int c = (int) Math.floor(x);
+        int r = (int) Math.floor(y);
+        int c1 = Math.min(c + 1, dem.width() - 1);
+        int r1 = Math.min(r + 1, dem.height() - 1);
+        double fx = x - c;
+        double fy = y - r;
+        return (1 - fx) * (1 - fy) * isData(dem.get(c, r)) + fx * (1 - fy) * isData(dem.get(c1, r))
+                + (1 - fx) * fy * isData(dem.get(c, r1)) + fx * fy * isData(dem.get(c1, r1));
+    }
+
+    private static double isData(float v) {
+        return Float.isNaN(v) ? 0 : 1;
+    }
+
+    /** Bilinear over the corners that are data, renormalised (NaN when none is), inside the grid. */
+    static float bilinearOfData(Bicubic.Cells dem, int width, int height, double x, double y) {
+        int c = (int) Math.floor(x);
+        int r = (int) Math.floor(y);
+        int c1 = Math.min(c + 1, width - 1);
+        int r1 = Math.min(r + 1, height - 1);
+        double fx = x - c;
+        double fy = y - r;
+        double[] wts = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+        float[] vs = {dem.get(c, r), dem.get(c1, r), dem.get(c, r1), dem.get(c1, r1)};
+        double sum = 0;
+        double wsum = 0;
+        for (int i = 0; i < 4; i++) {
+            if (!Float.isNaN(vs[i]) && wts[i] > 0) {
+                sum += wts[i] * vs[i];
+                wsum += wts[i];
+            }
+        }
+        return wsum == 0 ? Float.NaN : (float) (sum / wsum);
+    }
+
+    private static float bilinearOfData(Source src, double x, double y) {
+        return bilinearOfData(src::get, src.width(), src.height(), x, y);
     }
 
     /**

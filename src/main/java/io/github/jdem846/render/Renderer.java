@@ -23,8 +23,9 @@ import java.util.concurrent.TimeUnit;
  * pixel per DEM cell: cast shadows first (parallel inside the shadow algorithm), then tint, illumination and
  * composition tile by tile on a {@link ForkJoinPool}. The result is identical for any thread count and tile size.
  *
- * <p>To render at a smaller size, resample the DEM first ({@link io.github.jdem846.raster.DemResampler}, or a
- * decimated read): stages then run at the output resolution.
+ * <p>To render at another size, resample the DEM first ({@link io.github.jdem846.raster.DemResampler}, or a
+ * decimated read): stages then run at the output resolution. An enlarged DEM's coverage ({@link Dem#coverage})
+ * scales the alpha of its pixels, so that the edges of no-data are anti-aliased.
  *
  * <p>Threads: each call runs on a pool of its own ({@link RenderSettings#parallelism()} daemon threads named
  * {@code jdem846-render-…}, shut down when the call returns), or on the caller's pool given by
@@ -100,6 +101,7 @@ public final class Renderer {
         int[] argb = new int[width * height];
         float[] values = dem.backingArray();
         int demWidth = dem.width();
+        boolean covered = dem.hasCoverage();
         new TileExecutor(pool, settings.tileSize()).forEachTile(width, height, RenderProgress.SHADING, progress,
                 (c0, r0, w, h) -> {
                     float[] dot = new float[w * h];
@@ -111,13 +113,21 @@ public final class Renderer {
                         int in = (area.row() + r0 + r) * demWidth + area.col() + c0;
                         for (int c = 0; c < w; c++) {
                             double s = shadow == null ? 0 : shadow[out + c];
-                            argb[out + c] = compositor.compose(tint.argb(values[in + c]), dot[r * w + c], s,
+                            int pixel = compositor.compose(tint.argb(values[in + c]), dot[r * w + c], s,
                                     scene.fade());
+                            argb[out + c] = covered ? withCoverage(pixel, dem.coverage(area.col() + c0 + c,
+                                    area.row() + r0 + r)) : pixel;
                         }
                     }
                 });
         return new RenderedRelief(width, height, argb,
                 dem.geometry().window(area.col(), area.row(), width, height));
+    }
+
+    /** {@code argb} with its alpha scaled by {@code coverage} (an anti-aliased edge of no-data). */
+    static int withCoverage(int argb, float coverage) {
+        int alpha = Math.round((argb >>> 24) * coverage);
+        return alpha << 24 | (alpha == 0 ? 0 : argb & 0xFFFFFF);
     }
 
     /**

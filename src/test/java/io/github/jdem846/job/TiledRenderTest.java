@@ -45,6 +45,7 @@ class TiledRenderTest {
     static final Path TUJUNGA = Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.flt");
     static final Path JACKSBORO = Path.of("testdata/dem/jacksboro_srtm3s_wgs84.flt");
     static final Path JACKSBORO_TIF = Path.of("testdata/dem/jacksboro_srtm3s_wgs84.tif");
+    static final Path LUXEMBOURG = Path.of("testdata/dem/luxembourg_srtm30s_wgs84.tif");
     static final Path VANCOUVER = Path.of("testdata/dem/vancouver-island_topobathy_2min_mercator.flt");
     private static final RenderSettings TWO_THREADS = new RenderSettings(2, 64);
     private static final WriteOptions NO_SIDECARS = WriteOptions.defaults()
@@ -210,6 +211,22 @@ class TiledRenderTest {
                 .withWindow(Window.cells(10, 20, 90, 60)).withSize(OutputSize.width(70)), 1, forced(1, 1), 9);
         assertTiledEqualsInMemory("vancouver-hs.tif", low.withProduct(Product.HILLSHADE)
                 .withScene(Scene.defaults().withHillshade(HillshadeMethod.HORN)), 1, forced(2, 1), 8);
+    }
+
+    /**
+     * An enlarged picture (7.3 pixels per cell) with no-data outside Luxembourg's border: each tile's grid is
+     * interpolated from the cells around it (the halo in cells of the file covers the interpolation's), and its
+     * anti-aliased edge and shadows are those of the whole picture; also for a window, whose read halo covers the
+     * interpolation too.
+     */
+    @Test
+    void anEnlargedPictureWithNoDataEdgesRendersInTilesAsInMemory() throws Exception {
+        ReliefJob lux = ReliefJob.of(LUXEMBOURG).withScene(sweep()).withSun(Sun.fixed(135, 20))
+                .withSize(OutputSize.width(700));
+        assertTiledEqualsInMemory("lux-x7.png", lux, 1, forced(3, 2), 16);
+        assertTiledEqualsInMemory("lux-x7-hs.png", lux.withProduct(Product.HILLSHADE), 1, forced(4, 3), 16);
+        assertTiledEqualsInMemory("lux-x7-window.png", lux.withWindow(Window.cells(50, 30, 40, 40))
+                .withSize(OutputSize.scale(7.3)), 1, forced(2, 2), 9);
     }
 
     @Test

@@ -105,16 +105,104 @@ class DemResamplerTest {
                 int[] cols = DemResampler.sourceSpan(97, size[0], c, w);
                 int[] rows = DemResampler.sourceSpan(61, size[1], r, h);
                 Dem part = full.crop(cols[0], rows[0], cols[1] - cols[0], rows[1] - rows[0]);
-                float[] region = DemResampler.resampleRegion(part, cols[0], rows[0], 97, 61, size[0], size[1],
-                        c, r, w, h);
+                Dem region = DemResampler.resampleRegion(part, cols[0], rows[0], 97, 61, size[0], size[1],
+                        c, r, w, h, whole.geometry().window(c, r, w, h), DemResampler.DEFAULT_UPSAMPLING);
                 for (int y = 0; y < h; y++) {
                     for (int x = 0; x < w; x++) {
                         assertEquals(Float.floatToIntBits(whole.get(c + x, r + y)),
-                                Float.floatToIntBits(region[y * w + x]), size[0] + "×" + size[1] + " at "
+                                Float.floatToIntBits(region.get(x, y)), size[0] + "×" + size[1] + " at "
                                         + (c + x) + "," + (r + y));
+                        assertEquals(whole.coverage(c + x, r + y), region.coverage(x, y));
                     }
                 }
             }
         }
+    }
+
+    /** Cells at −1 m between cells at −50 m, row after row (a shoal one cell wide, across the grid). */
+    private static Dem shoal() {
+        float[] v = new float[6 * 4];
+        for (int r = 0; r < 4; r++) {
+            for (int c = 0; c < 6; c++) {
+                v[r * 6 + c] = c == 2 || c == 3 ? -1 : -50;
+            }
+        }
+        return SyntheticDems.metric(6, 4, 100, v);
+    }
+
+    @Test
+    void catmullRomOvershootsAShoalIntoAnIslandAndTheClampedOneDoesNot() {
+        // between x = 2 and 3, neighbours at −50: up to 2·(−50·−1/16) + 2·(−1·9/16) = +5.125 m
+        Dem plain = DemResampler.resample(shoal(), 48, 32, Upsampling.CATMULL_ROM);
+        Dem clamped = DemResampler.resample(shoal(), 48, 32, Upsampling.CLAMPED_CATMULL_ROM);
+        Dem monotone = DemResampler.resample(shoal(), 48, 32, Upsampling.MONOTONE_CUBIC);
+        // output column 24: centre at x = 24.5/8 − 0.5 = 2.5625
+        assertTrue(plain.get(24, 16) > 4, "Catmull-Rom: " + plain.get(24, 16));
+        assertEquals(-1f, clamped.get(24, 16));
+        assertEquals(-1f, monotone.get(24, 16));
+    }
+
+    @Test
+    void theSmoothSurfacesStayWithinTheCellsTheyRead() {
+        Dem rough = SyntheticDems.rough(24, 18, 30, 11, 500);
+        Dem clamped = DemResampler.resample(rough, 24 * 5, 18 * 5, Upsampling.CLAMPED_CATMULL_ROM);
+        Dem monotone = DemResampler.resample(rough, 24 * 5, 18 * 5, Upsampling.MONOTONE_CUBIC);
+        for (int r = 0; r < clamped.height(); r++) {
+            for (int c = 0; c < clamped.width(); c++) {
+                double x = (c + 0.5) / 5 - 0.5;
+                double y = (r + 0.5) / 5 - 0.5;
+                if (x < 0 || y < 0 || x > 23 || y > 17) {
+                    continue; // the outer half cells go on linearly
+                }
+                int c0 = Math.min(22, (int) x);
+                int r0 = Math.min(16, (int) y);
+                float[] inner = {rough.get(c0, r0), rough.get(c0 + 1, r0), rough.get(c0, r0 + 1),
+                    rough.get(c0 + 1, r0 + 1)};
+                float lo = Math.min(Math.min(inner[0], inner[1]), Math.min(inner[2], inner[3]));
+                float hi = Math.max(Math.max(inner[0], inner[1]), Math.max(inner[2], inner[3]));
+                float m = monotone.get(c, r);
+                assertTrue(m >= lo - 1e-3 && m <= hi + 1e-3, "monotone " + m + " outside " + lo + ".." + hi);
+                float lo4 = Float.MAX_VALUE;
+                float hi4 = -Float.MAX_VALUE;
+                for (int j = Math.max(0, r0 - 1); j <= Math.min(17, r0 + 2); j++) {
+                    for (int i = Math.max(0, c0 - 1); i <= Math.min(23, c0 + 2); i++) {
+                        lo4 = Math.min(lo4, rough.get(i, j));
+                        hi4 = Math.max(hi4, rough.get(i, j));
+                    }
+                }
+                float k = clamped.get(c, r);
+                assertTrue(k >= lo4 && k <= hi4, "clamped " + k + " outside " + lo4 + ".." + hi4);
+            }
+        }
+    }
+
+    /**
+     * A straight edge of no-data along a cell edge: at a whole factor it falls on a pixel edge (coverage 1 on one
+     * side, 0 on the other, nothing to blend); at 7.625 it crosses the middle of pixel 30, which is half covered.
+     */
+    @Test
+    void theEdgeOfNoDataIsCoveredAsAPixelWideBoxWouldSeeIt() {
+        float n = Float.NaN;
+        float[] v = new float[8 * 2];
+        for (int r = 0; r < 2; r++) {
+            for (int c = 0; c < 8; c++) {
+                v[r * 8 + c] = c < 4 ? 10 + c : n;
+            }
+        }
+        Dem whole = DemResampler.resample(SyntheticDems.metric(8, 2, 10, v), 64, 16);
+        assertEquals(1f, whole.coverage(31, 8));
+        assertEquals(0f, whole.coverage(32, 8));
+        assertTrue(Float.isNaN(whole.get(32, 8)));
+        Dem out = DemResampler.resample(SyntheticDems.metric(8, 2, 10, v), 61, 16);
+        assertTrue(out.hasCoverage());
+        float last = 1;
+        for (int c = 0; c < 61; c++) {
+            float a = out.coverage(c, 8);
+            assertTrue(a <= last, "column " + c);
+            assertEquals(a == 0, Float.isNaN(out.get(c, 8)), "no-data exactly where nothing is covered, column " + c);
+            assertEquals(c < 30 ? 1f : c == 30 ? 0.5f : 0f, a, 1e-6f, "column " + c);
+            last = a;
+        }
+        assertEquals(13f, out.get(30, 8), 1e-4, "a half-covered pixel has the value of the data it covers");
     }
 }
