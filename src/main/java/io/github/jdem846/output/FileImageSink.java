@@ -24,13 +24,14 @@ final class FileImageSink implements ImageSink {
     private final StagedFiles staged;
     private final BandEncoder encoder;
     private final StageProgress progress;
+    private final Integer background;
     private int rows;
     private boolean failed;
     private boolean committed;
     private boolean closed;
 
     private FileImageSink(Path file, int width, int height, int samplesPerPixel, SidecarPlan plan,
-                          StagedFiles staged, BandEncoder encoder, StageProgress progress) {
+                          StagedFiles staged, BandEncoder encoder, StageProgress progress, Integer background) {
         this.file = file;
         this.width = width;
         this.height = height;
@@ -39,6 +40,7 @@ final class FileImageSink implements ImageSink {
         this.staged = staged;
         this.encoder = encoder;
         this.progress = progress;
+        this.background = background;
     }
 
     /**
@@ -86,11 +88,16 @@ final class FileImageSink implements ImageSink {
             throw new IllegalArgumentException("no-data of an 8-bit image must be an integer 0..255, got " + noData);
         }
         Pixels.rowBytes(width, samplesPerPixel, bitsPerSample);
+        if (format == ImageFormat.JPEG) {
+            JpegWriter.checkSize(file, width, height, samplesPerPixel);
+        }
         SidecarPlan plan = SidecarPlan.checked(file, format, geo, width, height, options);
         StagedFiles staged = new StagedFiles();
         try {
             Path temp = staged.open(file);
             BandEncoder encoder = switch (format) {
+                case JPEG -> new JpegWriter(temp, width, height, samplesPerPixel, options.jpegQuality(),
+                        options.background() != null ? options.background() : WriteOptions.DEFAULT_JPEG_BACKGROUND);
                 case PNG -> PngWriter.toFile(temp, width, height, samplesPerPixel, options.pngCompressionLevel(),
                         options.parallelCompression());
                 case GEOTIFF -> cog
@@ -101,7 +108,8 @@ final class FileImageSink implements ImageSink {
             };
             StageProgress rows = new StageProgress(progress, RenderProgress.WRITE, encoder.rowsToEncode()).start();
             encoder.onEncoded(rows::add);
-            return new FileImageSink(file, width, height, samplesPerPixel, plan, staged, encoder, rows);
+            return new FileImageSink(file, width, height, samplesPerPixel, plan, staged, encoder, rows,
+                    options.background());
         } catch (IOException e) {
             staged.close();
             throw StagedFiles.withTarget(e, file);
@@ -167,7 +175,10 @@ final class FileImageSink implements ImageSink {
                     : committed ? "committed" : "closed"));
         }
         try {
-            encoder.append(band);
+            encoder.append(background != null && band instanceof Pixels.Argb rgba
+                    ? new Pixels.Argb(Background.under(rgba.argb(), rgba.width() * rgba.height(), background),
+                            rgba.width(), rgba.height())
+                    : band);
         } catch (IOException e) {
             failed = true;
             throw StagedFiles.withTarget(e, file);

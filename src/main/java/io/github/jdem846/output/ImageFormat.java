@@ -10,7 +10,9 @@ enum ImageFormat {
     /** PNG: 8-bit RGBA or 8-bit gray; georeferencing only in sidecar files. */
     PNG("pgw", ".png"),
     /** GeoTIFF: single-band 8-bit gray or float32 (and 8-bit RGBA), georeferencing embedded. */
-    GEOTIFF("tfw", ".tif", ".tiff");
+    GEOTIFF("tfw", ".tif", ".tiff"),
+    /** JPEG: 8-bit RGB or gray, lossy, no transparency (RGBA pictures are laid on a background); sidecars only. */
+    JPEG("jgw", ".jpg", ".jpeg");
 
     private final String worldFileExtension;
     private final List<String> extensions;

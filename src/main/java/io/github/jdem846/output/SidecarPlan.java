@@ -75,7 +75,7 @@ final class SidecarPlan {
     /** Whether {@code options} ask for sidecars next to a file of {@code format}. */
     static boolean isDue(ImageFormat format, WriteOptions options) {
         return options.sidecars() == WriteOptions.Sidecars.ALWAYS
-                || (options.sidecars() == WriteOptions.Sidecars.WHEN_NOT_EMBEDDED && format == ImageFormat.PNG);
+                || (options.sidecars() == WriteOptions.Sidecars.WHEN_NOT_EMBEDDED && format != ImageFormat.GEOTIFF);
     }
 
     /**

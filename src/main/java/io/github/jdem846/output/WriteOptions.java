@@ -20,10 +20,20 @@ import java.util.Objects;
  * @param tiffLayout          how a GeoTIFF is laid out: {@link TiffLayout#STRIPS} (the default) or a
  *                            Cloud-Optimized GeoTIFF ({@link TiffLayout#COG}, GeoTIFF files only)
  * @param cogTileSize         the tile edge of a COG in pixels, a multiple of 16 from 16 to 4096 (default 512)
+ * @param jpegQuality         JPEG quality 1 (smallest) to 100 (best), default 90
+ * @param background          non-premultiplied 0xAARRGGBB colour an RGBA picture is laid on before writing (no-data
+ *                            and partly transparent pixels take it; an opaque colour gives an opaque picture), or
+ *                            {@code null} to keep transparency; a JPEG, which has none, uses white when null
  */
 public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, Double noData,
                            int pngCompressionLevel, boolean parallelCompression, TiffLayout tiffLayout,
-                           int cogTileSize) {
+                           int cogTileSize, int jpegQuality, Integer background) {
+
+    /** The default JPEG quality. */
+    public static final int DEFAULT_JPEG_QUALITY = 90;
+
+    /** The background of a JPEG when none is given: white, as the original's. */
+    public static final int DEFAULT_JPEG_BACKGROUND = 0xFFFFFFFF;
 
     /** The default tile edge of a COG, as GDAL's COG driver. */
     public static final int DEFAULT_COG_TILE_SIZE = 512;
@@ -70,6 +80,9 @@ public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, D
             throw new IllegalArgumentException("COG tile size must be a multiple of 16 from 16 to 4096, got "
                     + cogTileSize);
         }
+        if (jpegQuality < 1 || jpegQuality > 100) {
+            throw new IllegalArgumentException("JPEG quality must be 1..100, got " + jpegQuality);
+        }
     }
 
     /**
@@ -78,51 +91,69 @@ public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, D
      */
     public static WriteOptions defaults() {
         return new WriteOptions(Sidecars.NONE, WorldFileNaming.FORMAT, null, 1, true, TiffLayout.STRIPS,
-                DEFAULT_COG_TILE_SIZE);
+                DEFAULT_COG_TILE_SIZE, DEFAULT_JPEG_QUALITY, null);
     }
 
     public WriteOptions withSidecars(Sidecars value) {
         return new WriteOptions(value, worldFileNaming, noData, pngCompressionLevel, parallelCompression, tiffLayout,
-                cogTileSize);
+                cogTileSize, jpegQuality, background);
     }
 
     public WriteOptions withWorldFileNaming(WorldFileNaming value) {
         return new WriteOptions(sidecars, value, noData, pngCompressionLevel, parallelCompression, tiffLayout,
-                cogTileSize);
+                cogTileSize, jpegQuality, background);
     }
 
     /** A copy with the given GeoTIFF no-data value. */
     public WriteOptions withNoData(double value) {
         return new WriteOptions(sidecars, worldFileNaming, value, pngCompressionLevel, parallelCompression,
-                tiffLayout, cogTileSize);
+                tiffLayout, cogTileSize, jpegQuality, background);
     }
 
     /** A copy without a GeoTIFF no-data value. */
     public WriteOptions withoutNoData() {
         return new WriteOptions(sidecars, worldFileNaming, null, pngCompressionLevel, parallelCompression,
-                tiffLayout, cogTileSize);
+                tiffLayout, cogTileSize, jpegQuality, background);
     }
 
     public WriteOptions withPngCompressionLevel(int value) {
         return new WriteOptions(sidecars, worldFileNaming, noData, value, parallelCompression, tiffLayout,
-                cogTileSize);
+                cogTileSize, jpegQuality, background);
     }
 
     /** A copy that compresses on all processors, or on the calling thread only. */
     public WriteOptions withParallelCompression(boolean value) {
         return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, value, tiffLayout,
-                cogTileSize);
+                cogTileSize, jpegQuality, background);
     }
 
     /** A copy writing GeoTIFFs in strips or as a Cloud-Optimized GeoTIFF (PNG files refuse the COG layout). */
     public WriteOptions withTiffLayout(TiffLayout value) {
         return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, parallelCompression, value,
-                cogTileSize);
+                cogTileSize, jpegQuality, background);
     }
 
     /** A copy with COG tiles of {@code value} × {@code value} pixels (a multiple of 16 from 16 to 4096). */
     public WriteOptions withCogTileSize(int value) {
         return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, parallelCompression,
-                tiffLayout, value);
+                tiffLayout, value, jpegQuality, background);
+    }
+
+    /**
+     * @param value JPEG quality 1..100
+     * @return these options with that JPEG quality
+     */
+    public WriteOptions withJpegQuality(int value) {
+        return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, parallelCompression,
+                tiffLayout, cogTileSize, value, background);
+    }
+
+    /**
+     * @param argb the colour an RGBA picture is laid on (0xAARRGGBB), or {@code null} to keep transparency
+     * @return these options with that background
+     */
+    public WriteOptions withBackground(Integer argb) {
+        return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, parallelCompression,
+                tiffLayout, cogTileSize, jpegQuality, argb);
     }
 }

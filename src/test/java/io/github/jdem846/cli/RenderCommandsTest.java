@@ -172,7 +172,7 @@ class RenderCommandsTest {
         CliRun badSun = CliRun.of("render", BT, "-o", out.toString(), "--sun-elevation", "95");
         assertEquals(2, badSun.exitCode());
         assertTrue(badSun.err().contains("-90 and 90"), badSun.err());
-        CliRun badExt = CliRun.of("render", BT, "-o", dir.resolve("x.jpg").toString());
+        CliRun badExt = CliRun.of("render", BT, "-o", dir.resolve("x.gif").toString());
         assertEquals(2, badExt.exitCode(), "an unknown extension is bad usage");
         assertTrue(badExt.err().contains(".png") && badExt.err().contains("--output"), badExt.err());
         CliRun usage = CliRun.of("render", BT);
