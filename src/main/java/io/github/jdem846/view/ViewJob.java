@@ -1,0 +1,151 @@
+package io.github.jdem846.view;
+
+import io.github.jdem846.io.DemInfo;
+import io.github.jdem846.io.DemReader;
+import io.github.jdem846.io.LoadedDem;
+import io.github.jdem846.io.ReadRequest;
+import io.github.jdem846.io.Window;
+import io.github.jdem846.job.JobListener;
+import io.github.jdem846.job.ReliefJob;
+import io.github.jdem846.job.ReliefResult;
+import io.github.jdem846.output.WriteOptions;
+import io.github.jdem846.output.WriteResult;
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.render.OutputSize;
+import io.github.jdem846.render.RenderedRelief;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Objects;
+
+/**
+ * A perspective view of a DEM file, from file to pixels: the shaded relief of {@code relief} (its input, window,
+ * scene, sun, body and threads; its size is not used) rendered as the texture, and the terrain drawn under it by
+ * {@link PerspectiveRenderer}.
+ *
+ * <p>What the picture cannot show is not computed: the terrain is read box-averaged to at most about one cell per
+ * picture pixel ({@link #meshDecimation}), and the relief texture is rendered at most at about {@value
+ * #TEXTURE_PIXELS_PER_PIXEL} texture pixels per picture pixel ({@link #textureSize}).
+ *
+ * <pre>{@code
+ * RenderedView view = new ViewJob(ReliefJob.of(Path.of("dem.tif")), Camera.defaults(),
+ *         ViewOptions.defaults().withExaggeration(2)).run(JobListener.NONE);
+ * view.write(Path.of("view.png"), WriteOptions.defaults());
+ * }</pre>
+ *
+ * @param relief  the relief picture draped on the terrain, and the DEM it comes from
+ * @param camera  where the camera stands and the picture's size
+ * @param options exaggeration, background, globe
+ */
+public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
+
+    /** Most texture pixels per picture pixel. */
+    static final int TEXTURE_PIXELS_PER_PIXEL = 4;
+
+    public ViewJob {
+        Objects.requireNonNull(relief, "relief");
+        Objects.requireNonNull(camera, "camera");
+        Objects.requireNonNull(options, "options");
+    }
+
+    /**
+     * Reads the DEM, renders its relief and draws the view.
+     *
+     * @param listener told of progress, notices, the sun used and the end of each phase ("read", "render",
+     *                 "view")
+     * @return the picture
+     * @throws IOException          when the DEM cannot be read
+     * @throws InterruptedException when the calling thread is interrupted
+     * @throws io.github.jdem846.raster.GridRequestException when the window does not fit the grid
+     * @throws IllegalArgumentException in globe mode, for a grid whose CRS gives no latitude and longitude
+     */
+    public RenderedView run(JobListener listener) throws IOException, InterruptedException {
+        Objects.requireNonNull(listener, "listener");
+        relief.requireDrawable();
+        DemInfo info = relief.input() == null ? DemReader.loadSample(ReadRequest.FULL).info()
+                : DemReader.inspect(relief.input());
+        Window.Cells cells = relief.window() == null ? Window.cells(0, 0, info.geometry().width(),
+                info.geometry().height()) : relief.window().resolve(info.geometry());
+        Dem terrain = readTerrain(cells);
+        listener.phaseDone("read");
+        ReliefResult picture = relief.withSize(textureSize(cells.width(), cells.height(), camera)).run(listener);
+        RenderedRelief texture = new RenderedRelief(picture.width(), picture.height(), picture.argb(),
+                picture.geometry());
+        RenderedView view = new PerspectiveRenderer(relief.execution()).render(terrain, texture, camera, options,
+                listener);
+        listener.phaseDone("view");
+        return view;
+    }
+
+    /**
+     * Runs the job and writes the picture to {@code file}, all or nothing; an output that would replace a file of
+     * the input is refused first.
+     *
+     * @param file     the image file (.png, or .tif for an RGBA TIFF without georeferencing)
+     * @param options  how to write it (no sidecars: a perspective view has no place on the ground)
+     * @param listener told of progress, notices and phases
+     * @return the files written
+     * @throws IOException          when the input cannot be read or the output cannot be written
+     * @throws InterruptedException when the calling thread is interrupted
+     */
+    public WriteResult runAndWrite(Path file, WriteOptions options, JobListener listener)
+            throws IOException, InterruptedException {
+        Objects.requireNonNull(file, "file");
+        Objects.requireNonNull(options, "options");
+        WriteOptions noSidecars = options.withSidecars(WriteOptions.Sidecars.NONE);
+        relief.checkOutput(file, noSidecars);
+        RenderedView view = run(listener);
+        WriteResult written = view.write(file, noSidecars);
+        written.notices().forEach(listener::notice);
+        listener.phaseDone("write");
+        return written;
+    }
+
+    /** The terrain: the window, box-averaged to about one cell per picture pixel, measured as the relief is. */
+    private Dem readTerrain(Window.Cells cells) throws IOException {
+        ReadRequest request = new ReadRequest(cells, meshDecimation(cells.width(), cells.height(), camera));
+        LoadedDem loaded = relief.input() == null ? DemReader.loadSample(request)
+                : DemReader.load(relief.input(), request);
+        Dem dem = loaded.dem();
+        GridGeometry g = relief.mercatorScale().apply(dem.geometry().withDefaultEllipsoid(
+                relief.body().ellipsoid()));
+        return dem.withGeometry(g);
+    }
+
+    /**
+     * The box-averaging factor of the terrain: 1 while the window has at most about as many cells as the picture
+     * has pixels, else the smallest that brings it there.
+     *
+     * @param cols   the window's columns
+     * @param rows   the window's rows
+     * @param camera the picture's size
+     * @return the factor, ≥ 1
+     */
+    static int meshDecimation(int cols, int rows, Camera camera) {
+        double ratio = (double) cols * rows / ((double) camera.width() * camera.height());
+        return Math.max(1, (int) Math.ceil(Math.sqrt(ratio)));
+    }
+
+    /**
+     * The relief texture's size: the window's full resolution while it has between one cell per picture pixel and
+     * {@value #TEXTURE_PIXELS_PER_PIXEL}; scaled down to {@value #TEXTURE_PIXELS_PER_PIXEL} texture pixels per
+     * picture pixel for a larger window; for a smaller one, resampled up to about one texture pixel per picture
+     * pixel (at most {@value #MAX_UPSAMPLING} × per side), so that hillshade and shadows are not drawn as blocks.
+     *
+     * @param cols   the window's columns
+     * @param rows   the window's rows
+     * @param camera the picture's size
+     * @return the size
+     */
+    static OutputSize textureSize(int cols, int rows, Camera camera) {
+        double cellsPerPixel = (double) cols * rows / ((double) camera.width() * camera.height());
+        if (cellsPerPixel > TEXTURE_PIXELS_PER_PIXEL) {
+            return OutputSize.scale(Math.sqrt(TEXTURE_PIXELS_PER_PIXEL / cellsPerPixel));
+        }
+        return cellsPerPixel >= 1 ? OutputSize.FULL
+                : OutputSize.scale(Math.min(MAX_UPSAMPLING, Math.sqrt(1 / cellsPerPixel)));
+    }
+
+    /** Most a small window's relief is enlarged, per side. */
+    static final int MAX_UPSAMPLING = 4;
+}
