@@ -90,6 +90,20 @@ public final class PerspectiveRenderer {
         return new RenderedView(w, h, argb);
     }
 
+    /**
+     * The cells of {@code dem} whose triangles the camera sees (all of them, or fewer when it stands close):
+     * {firstCol, firstRow, lastCol, lastRow}, or null when none.
+     *
+     * @param dem     the terrain
+     * @param camera  the camera
+     * @param options exaggeration and globe
+     * @return the box of cells, each the square between four vertices (so the last is at most width − 2)
+     */
+    static int[] visibleCells(Dem dem, Camera camera, ViewOptions options) {
+        Terrain terrain = Terrain.of(dem, dem.geometry(), options);
+        return new Rasterizer(terrain, pose(terrain, camera), camera.width(), camera.height()).drawnCells();
+    }
+
     /** The camera's pose: looking at the middle of the terrain's height range above its centre. */
     static Pose pose(Terrain terrain, Camera camera) {
         double zMin = Double.POSITIVE_INFINITY;

@@ -112,6 +112,24 @@ final class Rasterizer {
     }
 
     /**
+     * The cells whose triangles may be drawn: {firstCol, firstRow, lastCol, lastRow} of the terrain's cells that
+     * overlap the picture, or null when none does.
+     */
+    int[] drawnCells() {
+        int cellsAcross = terrain.width - 1;
+        int[] box = {Integer.MAX_VALUE, Integer.MAX_VALUE, -1, -1};
+        for (int k : binCells) {
+            int c = k % cellsAcross;
+            int r = k / cellsAcross;
+            box[0] = Math.min(box[0], c);
+            box[1] = Math.min(box[1], r);
+            box[2] = Math.max(box[2], c);
+            box[3] = Math.max(box[3], r);
+        }
+        return box[2] < 0 ? null : box;
+    }
+
+    /**
      * Draws band {@code band}: for each of its pixels covered by terrain, the inverse depth (0 where none) and the
      * texture position.
      *

@@ -24,8 +24,9 @@ import java.util.Objects;
  * {@link PerspectiveRenderer}.
  *
  * <p>What the picture cannot show is not computed: the terrain is read box-averaged to at most about one cell per
- * picture pixel ({@link #meshDecimation}), and the relief texture is rendered at most at about {@value
- * #TEXTURE_PIXELS_PER_PIXEL} texture pixels per picture pixel ({@link #textureSize}).
+ * picture pixel ({@link #meshDecimation}); the relief texture, cast shadows included, is rendered only for the
+ * cells the camera sees, at most at about {@value #TEXTURE_PIXELS_PER_PIXEL} texture pixels per picture pixel
+ * ({@link #textureSize}).
  *
  * <pre>{@code
  * RenderedView view = new ViewJob(ReliefJob.of(Path.of("dem.tif")), Camera.defaults(),
@@ -68,7 +69,14 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
                 info.geometry().height()) : relief.window().resolve(info.geometry());
         Dem terrain = readTerrain(cells);
         listener.phaseDone("read");
-        ReliefResult picture = relief.withSize(textureSize(cells.width(), cells.height(), camera)).run(listener);
+        Window seen = visibleWindow(terrain);
+        if (seen == null) {
+            throw new IllegalArgumentException("the camera sees none of the terrain: it looks away from it or stands"
+                    + " too close; step back with a larger distance");
+        }
+        Window.Cells seenCells = seen.resolve(info.geometry());
+        ReliefResult picture = relief.withWindow(seen)
+                .withSize(textureSize(seenCells.width(), seenCells.height(), camera)).run(listener);
         RenderedRelief texture = new RenderedRelief(picture.width(), picture.height(), picture.argb(),
                 picture.geometry());
         RenderedView view = new PerspectiveRenderer(relief.execution()).render(terrain, texture, camera, options,
@@ -99,6 +107,24 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
         written.notices().forEach(listener::notice);
         listener.phaseDone("write");
         return written;
+    }
+
+    /**
+     * The part of the file the camera sees, as a world window: the cells it sees and half a cell around, so that
+     * the relief (and its cast shadows) is rendered only there; shadows cast from outside still fall into it,
+     * since the relief reads the halo its stages need.
+     */
+    private Window visibleWindow(Dem terrain) {
+        int[] box = PerspectiveRenderer.visibleCells(terrain, camera, options);
+        if (box == null) {
+            return null;
+        }
+        GridGeometry g = terrain.geometry();
+        double west = g.originX() + box[0] * g.cellWidth();
+        double east = g.originX() + (box[2] + 2) * g.cellWidth();
+        double north = g.originY() - box[1] * g.cellHeight();
+        double south = g.originY() - (box[3] + 2) * g.cellHeight();
+        return Window.world(west, south, east, north);
     }
 
     /** The terrain: the window, box-averaged to about one cell per picture pixel, measured as the relief is. */

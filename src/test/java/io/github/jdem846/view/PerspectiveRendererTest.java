@@ -179,6 +179,23 @@ class PerspectiveRendererTest {
         assertTrue(sky > 0 && sky < one.length * 3 / 4, "some background, mostly terrain: " + sky);
     }
 
+    /**
+     * Straight down from 400 m over a 41 × 41 grid of 10 m cells with a 50° field of view on a square picture,
+     * the camera sees ±400 tan 25° ≈ ±187 m around the centre: cells 1 … 38 (those within 18.7 cells of the centre,
+     * and the ones straddling that edge), not the whole grid; from far away it sees all 40 × 40 cells.
+     */
+    @Test
+    void onlyTheCellsInViewAreVisible() {
+        int n = 41;
+        Dem dem = new Dem(new float[n * n], GridGeometry.metric(n, n, 10));
+        int[] close = PerspectiveRenderer.visibleCells(dem, new Camera(180, 90, 400, 50, 100, 100),
+                ViewOptions.defaults());
+        assertArrayEquals(new int[] {1, 1, 38, 38}, close);
+        int[] far = PerspectiveRenderer.visibleCells(dem, new Camera(180, 90, 4000, 50, 100, 100),
+                ViewOptions.defaults());
+        assertArrayEquals(new int[] {0, 0, 39, 39}, far);
+    }
+
     private static int maxChannelDifference(int a, int b) {
         int d = 0;
         for (int shift = 0; shift <= 16; shift += 8) {
