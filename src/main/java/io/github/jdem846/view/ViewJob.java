@@ -52,8 +52,8 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
     /**
      * Reads the DEM, renders its relief and draws the view.
      *
-     * @param listener told of progress, notices, the sun used and the end of each phase ("read", "render",
-     *                 "view")
+     * @param listener told of progress, notices, the sun used and the end of each phase ("terrain": the
+     *                 grid of the mesh read; "read" and "render": the relief; "view")
      * @return the picture
      * @throws IOException          when the DEM cannot be read
      * @throws InterruptedException when the calling thread is interrupted
@@ -68,7 +68,7 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
         Window.Cells cells = relief.window() == null ? Window.cells(0, 0, info.geometry().width(),
                 info.geometry().height()) : relief.window().resolve(info.geometry());
         Dem terrain = readTerrain(cells);
-        listener.phaseDone("read");
+        listener.phaseDone("terrain");
         Window seen = visibleWindow(terrain);
         if (seen == null) {
             throw new IllegalArgumentException("the camera sees none of the terrain: it looks away from it or stands"
