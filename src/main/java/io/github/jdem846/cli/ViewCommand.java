@@ -104,8 +104,8 @@ public final class ViewCommand implements Callable<Integer> {
         }
         Usage.check(spec, "--output", () -> io.github.jdem846.output.ImageOutput.filesWritten(output.path(),
                 WriteOptions.defaults()));
-        ReliefJob relief = ReliefJob.ofSample();
-        relief = (input.input() != null ? ReliefJob.of(input.input()) : relief).withProduct(Product.RELIEF)
+        ReliefJob relief = (input.input() != null ? ReliefJob.of(input.input()) : ReliefJob.ofSample())
+                .withProduct(Product.RELIEF)
                 .withWindow(input.window).withBody(input.body()).withScene(sceneOptions.scene())
                 .withSun(sun.sun()).withExecution(execution.settings()).withMemory(execution.memory());
         PrintWriter err = spec.commandLine().getErr();

@@ -6,6 +6,7 @@ import io.github.jdem846.io.LoadedDem;
 import io.github.jdem846.io.ReadRequest;
 import io.github.jdem846.io.Window;
 import io.github.jdem846.job.JobListener;
+import io.github.jdem846.job.Product;
 import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.job.ReliefResult;
 import io.github.jdem846.output.WriteOptions;
@@ -19,8 +20,9 @@ import java.nio.file.Path;
 import java.util.Objects;
 
 /**
- * A perspective view of a DEM file, from file to pixels: the shaded relief of {@code relief} (its input, window,
- * scene, sun, body and threads; its size is not used) rendered as the texture, and the terrain drawn under it by
+ * A perspective view of a DEM file, from file to pixels: the picture of {@code relief} (its product, normally the
+ * relief, with its input, window, scene, sun, body and threads; its size is not used) rendered as the texture, a
+ * gray product as gray, and the terrain drawn under it by
  * {@link PerspectiveRenderer}.
  *
  * <p>What the picture cannot show is not computed: the terrain is read box-averaged to at most about one cell per
@@ -77,7 +79,7 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
         Window.Cells seenCells = seen.resolve(info.geometry());
         ReliefResult picture = relief.withWindow(seen)
                 .withSize(textureSize(seenCells.width(), seenCells.height(), camera)).run(listener);
-        RenderedRelief texture = new RenderedRelief(picture.width(), picture.height(), picture.argb(),
+        RenderedRelief texture = new RenderedRelief(picture.width(), picture.height(), argbOf(picture),
                 picture.geometry());
         RenderedView view = new PerspectiveRenderer(relief.execution()).render(terrain, texture, camera, options,
                 listener);
@@ -107,6 +109,24 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
         written.notices().forEach(listener::notice);
         listener.phaseDone("write");
         return written;
+    }
+
+    /**
+     * The picture's pixels as ARGB: a gray product (a hillshade, a shadow mask) becomes opaque gray, a hillshade's
+     * 0 (no-data) transparent.
+     */
+    private static int[] argbOf(ReliefResult picture) {
+        if (picture.argb() != null) {
+            return picture.argb();
+        }
+        byte[] gray = picture.gray();
+        boolean zeroIsNoData = picture.job().product() == Product.HILLSHADE;
+        int[] argb = new int[gray.length];
+        for (int i = 0; i < gray.length; i++) {
+            int v = gray[i] & 255;
+            argb[i] = zeroIsNoData && v == 0 ? 0 : 0xFF000000 | v << 16 | v << 8 | v;
+        }
+        return argb;
     }
 
     /**

@@ -51,6 +51,17 @@ class ViewJobTest {
         assertEquals(ViewJob.MAX_UPSAMPLING, ViewJob.textureSize(10, 10, small).scale(), 1e-12);
     }
 
+    /** A gray product is draped as gray: a hillshade's view has only gray pixels where the terrain is. */
+    @Test
+    void aHillshadeIsDrapedAsGray() throws Exception {
+        ReliefJob hillshade = ReliefJob.of(TUJUNGA).withProduct(io.github.jdem846.job.Product.HILLSHADE);
+        RenderedView view = new ViewJob(hillshade, new Camera(180, 60, 0, 40, 120, 80), ViewOptions.defaults())
+                .run(JobListener.NONE);
+        int centre = view.argb()[40 * 120 + 60];
+        assertEquals((centre >> 16) & 255, centre & 255, Integer.toHexString(centre));
+        assertEquals((centre >> 8) & 255, centre & 255, Integer.toHexString(centre));
+    }
+
     /** Globe mode needs latitudes and longitudes: a CRS known only by its GeoKeys (NZTM here) is refused. */
     @Test
     void aGlobeOfAGridWithoutLatitudesIsRefused() {
