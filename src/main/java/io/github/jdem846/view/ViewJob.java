@@ -42,8 +42,8 @@ import java.util.Objects;
  */
 public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
 
-    /** Most texture pixels per picture pixel. */
-    static final int TEXTURE_PIXELS_PER_PIXEL = 4;
+    /** Most texture pixels per picture pixel, 4. */
+    public static final int TEXTURE_PIXELS_PER_PIXEL = 4;
 
     public ViewJob {
         Objects.requireNonNull(relief, "relief");
@@ -167,7 +167,7 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
      * @param camera the picture's size
      * @return the factor, ≥ 1
      */
-    static int meshDecimation(int cols, int rows, Camera camera) {
+    public static int meshDecimation(int cols, int rows, Camera camera) {
         double ratio = (double) cols * rows / ((double) camera.width() * camera.height());
         return Math.max(1, (int) Math.ceil(Math.sqrt(ratio)));
     }
@@ -183,7 +183,7 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
      * @param camera the picture's size
      * @return the size
      */
-    static OutputSize textureSize(int cols, int rows, Camera camera) {
+    public static OutputSize textureSize(int cols, int rows, Camera camera) {
         double cellsPerPixel = (double) cols * rows / ((double) camera.width() * camera.height());
         if (cellsPerPixel > TEXTURE_PIXELS_PER_PIXEL) {
             return OutputSize.scale(Math.sqrt(TEXTURE_PIXELS_PER_PIXEL / cellsPerPixel));
@@ -192,6 +192,6 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
                 : OutputSize.scale(Math.min(MAX_UPSAMPLING, Math.sqrt(1 / cellsPerPixel)));
     }
 
-    /** Most a small window's relief is enlarged, per side. */
-    static final int MAX_UPSAMPLING = 4;
+    /** Most a small window's relief is enlarged, per side: 4 times. */
+    public static final int MAX_UPSAMPLING = 4;
 }
