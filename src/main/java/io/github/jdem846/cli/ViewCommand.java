@@ -65,6 +65,11 @@ public final class ViewCommand implements Callable<Integer> {
                     + "rest of the body, on black space; use --distance to step back.")
     boolean globe;
 
+    @Option(names = "--no-base",
+            description = "No walls from the terrain's edges down to a base below it (drawn by default, not on the "
+                    + "globe).")
+    boolean noBase;
+
     @Mixin
     SceneOptions sceneOptions;
 
@@ -98,7 +103,7 @@ public final class ViewCommand implements Callable<Integer> {
         Camera camera = camera();
         ViewOptions options;
         try {
-            options = ViewOptions.defaults().withGlobe(globe).withExaggeration(exaggeration);
+            options = ViewOptions.defaults().withGlobe(globe).withBase(!noBase).withExaggeration(exaggeration);
         } catch (IllegalArgumentException e) {
             throw Usage.invalid(spec, e.getMessage(), "--exaggeration");
         }

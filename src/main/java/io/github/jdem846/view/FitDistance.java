@@ -69,15 +69,24 @@ final class FitDistance {
                 if (!(pose.depth(terrain.x[i], terrain.y[i], terrain.z[i]) > pose.near)) {
                     return null;
                 }
-                double x = pose.screenX(terrain.x[i], terrain.y[i], terrain.z[i]);
-                double y = pose.screenY(terrain.x[i], terrain.y[i], terrain.z[i]);
-                box[0] = Math.min(box[0], x);
-                box[1] = Math.max(box[1], x);
-                box[2] = Math.min(box[2], y);
-                box[3] = Math.max(box[3], y);
+                include(box, pose, terrain, i);
+            }
+        }
+        for (int i = terrain.size(); i < terrain.vertexCount(); i++) {
+            if (!Float.isNaN(terrain.z[i]) && pose.depth(terrain.x[i], terrain.y[i], terrain.z[i]) > pose.near) {
+                include(box, pose, terrain, i); // the base
             }
         }
         return box;
+    }
+
+    private static void include(double[] box, Pose pose, Terrain terrain, int i) {
+        double x = pose.screenX(terrain.x[i], terrain.y[i], terrain.z[i]);
+        double y = pose.screenY(terrain.x[i], terrain.y[i], terrain.z[i]);
+        box[0] = Math.min(box[0], x);
+        box[1] = Math.max(box[1], x);
+        box[2] = Math.min(box[2], y);
+        box[3] = Math.max(box[3], y);
     }
 
     /** The index after {@code i} in steps of {@code step}, always visiting the last, {@code n − 1}. */

@@ -13,7 +13,8 @@ import java.util.concurrent.atomic.AtomicLong;
 /**
  * Draws a perspective view of a DEM with a picture draped on it (normally its shaded relief, {@link
  * io.github.jdem846.render.Renderer}): the grid's cells become two triangles each, rasterised with a depth buffer
- * and perspective-correct, bilinear texture lookups, over horizontal bands of the picture in parallel; pixels no
+ * and perspective-correct, bilinear texture lookups, over horizontal bands of the picture in parallel (with walls
+ * down to a base, {@link ViewOptions#base()}); pixels no
  * terrain covers get the background ({@link ViewOptions}). The result is identical for any thread count.
  *
  * <p>Threads and cancelling as {@link io.github.jdem846.render.Renderer}: a pool of the settings' parallelism per
@@ -21,6 +22,9 @@ import java.util.concurrent.atomic.AtomicLong;
  * InterruptedException}. Immutable and thread-safe.
  */
 public final class PerspectiveRenderer {
+
+    /** The base's walls are the edge's colours at this fraction of their brightness. */
+    static final double WALL_BRIGHTNESS = 0.45;
 
     private final RenderSettings settings;
 
@@ -62,6 +66,7 @@ public final class PerspectiveRenderer {
         float[] depth = new float[w * h];
         float[] texU = new float[w * h];
         float[] texV = new float[w * h];
+        boolean[] wall = new boolean[w * h];
         int[] argb = new int[w * h];
         int bands = rasterizer.bands();
         AtomicLong done = new AtomicLong();
@@ -69,10 +74,13 @@ public final class PerspectiveRenderer {
         ForkJoinPool pool = shared != null ? shared : new ForkJoinPool(settings.parallelism());
         try {
             Cancellation.invokeAll(pool, bands, (band, cancel) -> {
-                rasterizer.drawBand(band, depth, texU, texV);
+                rasterizer.drawBand(band, depth, texU, texV, wall);
                 int end = Math.min(h, (band + 1) * Rasterizer.BAND) * w;
                 for (int p = band * Rasterizer.BAND * w; p < end; p++) {
                     int colour = depth[p] > 0 ? sampler.at(texU[p], texV[p]) : 0;
+                    if (colour != 0 && wall[p]) {
+                        colour = Background.mix(0xFF000000, colour, WALL_BRIGHTNESS);
+                    }
                     argb[p] = colour != 0 ? colour : background.at(p % w, p / w);
                 }
                 progress.update("view", done.incrementAndGet(), bands);
@@ -108,7 +116,8 @@ public final class PerspectiveRenderer {
     static Pose pose(Terrain terrain, Camera camera) {
         double zMin = Double.POSITIVE_INFINITY;
         double zMax = Double.NEGATIVE_INFINITY;
-        for (float z : terrain.z) {
+        for (int i = 0; i < terrain.size(); i++) {
+            float z = terrain.z[i];
             if (!Float.isNaN(z)) {
                 zMin = Math.min(zMin, z);
                 zMax = Math.max(zMax, z);

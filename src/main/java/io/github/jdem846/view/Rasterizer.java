@@ -2,7 +2,7 @@ package io.github.jdem846.view;
 
 /**
  * Draws the terrain's triangles, two per cell (the diagonal from the cell's north-west to its south-east vertex),
- * into a depth buffer with perspective-correct texture positions. The picture is cut into bands of {@value #BAND}
+ * and those of the base's walls, two per edge segment, into a depth buffer with perspective-correct texture positions. The picture is cut into bands of {@value #BAND}
  * rows; each band owns its pixels and draws the triangles binned to it in the same order (cell by cell, row 0
  * first), every pixel tested at its own centre, and the nearer of two fragments wins (the first drawn on a tie): so
  * a pixel's value does not depend on how many bands there are or which thread draws them.
@@ -29,7 +29,7 @@ final class Rasterizer {
         this.terrain = terrain;
         this.width = width;
         this.height = height;
-        int n = terrain.size();
+        int n = terrain.vertexCount();
         sx = new float[n];
         sy = new float[n];
         iz = new float[n];
@@ -56,46 +56,60 @@ final class Rasterizer {
         return (height + BAND - 1) / BAND;
     }
 
-    /** Lists, band by band in cell order, the cells whose projection may touch the band. */
+    /** The number of cells; items from here on are the base's walls, one per edge segment. */
+    private int cells() {
+        return (terrain.width - 1) * (terrain.height - 1);
+    }
+
+    /** The four vertices of item {@code k}: a cell's, or a wall's (two on the edge, the two under them). */
+    private int[] corners(int k) {
+        int w = terrain.width;
+        int cells = cells();
+        if (k < cells) {
+            int i = (k / (w - 1)) * w + k % (w - 1);
+            return new int[] {i, i + 1, i + w, i + w + 1};
+        }
+        int j = k - cells;
+        int next = (j + 1) % terrain.perimeter.length;
+        int n = terrain.size();
+        return new int[] {terrain.perimeter[j], terrain.perimeter[next], n + j, n + next};
+    }
+
+    /** Lists, band by band in item order (cells, then walls), the items whose projection may touch the band. */
     private void bin() {
         int bands = bands();
-        int w = terrain.width;
-        int cells = (w - 1) * (terrain.height - 1);
-        int[] first = new int[Math.max(0, cells)];
-        int[] last = new int[Math.max(0, cells)];
+        int items = cells() + terrain.perimeter.length;
+        int[] first = new int[Math.max(0, items)];
+        int[] last = new int[Math.max(0, items)];
         int[] count = new int[bands + 1];
-        int k = 0;
-        for (int r = 0; r + 1 < terrain.height; r++) {
-            for (int c = 0; c + 1 < w; c++, k++) {
-                int i = r * w + c;
-                float minX = Float.POSITIVE_INFINITY;
-                float maxX = Float.NEGATIVE_INFINITY;
-                float minY = Float.POSITIVE_INFINITY;
-                float maxY = Float.NEGATIVE_INFINITY;
-                int valid = 0;
-                for (int j : new int[] {i, i + 1, i + w, i + w + 1}) {
-                    if (!Float.isNaN(sx[j])) {
-                        valid++;
-                        minX = Math.min(minX, sx[j]);
-                        maxX = Math.max(maxX, sx[j]);
-                        minY = Math.min(minY, sy[j]);
-                        maxY = Math.max(maxY, sy[j]);
-                    }
+        for (int k = 0; k < items; k++) {
+            float minX = Float.POSITIVE_INFINITY;
+            float maxX = Float.NEGATIVE_INFINITY;
+            float minY = Float.POSITIVE_INFINITY;
+            float maxY = Float.NEGATIVE_INFINITY;
+            int valid = 0;
+            for (int j : corners(k)) {
+                if (!Float.isNaN(sx[j])) {
+                    valid++;
+                    minX = Math.min(minX, sx[j]);
+                    maxX = Math.max(maxX, sx[j]);
+                    minY = Math.min(minY, sy[j]);
+                    maxY = Math.max(maxY, sy[j]);
                 }
-                first[k] = -1;
-                if (valid < 3 || maxX < 0 || minX > width || maxY < 0 || minY > height) {
-                    continue;
-                }
-                int b0 = (int) Math.max(0, Math.floor((minY - 0.5) / BAND));
-                int b1 = (int) Math.min(bands - 1, Math.floor((maxY - 0.5) / BAND));
-                if (b1 < b0) {
-                    continue;
-                }
-                first[k] = b0;
-                last[k] = b1;
-                for (int b = b0; b <= b1; b++) {
-                    count[b + 1]++;
-                }
+            }
+            first[k] = -1;
+            if (valid < 3 || maxX < 0 || minX > width || maxY < 0 || minY > height) {
+                continue;
+            }
+            int b0 = (int) Math.max(0, Math.floor((minY - 0.5) / BAND));
+            int b1 = (int) Math.min(bands - 1, Math.floor((maxY - 0.5) / BAND));
+            if (b1 < b0) {
+                continue;
+            }
+            first[k] = b0;
+            last[k] = b1;
+            for (int b = b0; b <= b1; b++) {
+                count[b + 1]++;
             }
         }
         binStart = new int[bands + 1];
@@ -104,7 +118,7 @@ final class Rasterizer {
         }
         binCells = new int[binStart[bands]];
         int[] fill = binStart.clone();
-        for (k = 0; k < cells; k++) {
+        for (int k = 0; k < items; k++) {
             for (int b = first[k]; b >= 0 && b <= last[k]; b++) {
                 binCells[fill[b]++] = k;
             }
@@ -117,8 +131,12 @@ final class Rasterizer {
      */
     int[] drawnCells() {
         int cellsAcross = terrain.width - 1;
+        int cells = cells();
         int[] box = {Integer.MAX_VALUE, Integer.MAX_VALUE, -1, -1};
         for (int k : binCells) {
+            if (k >= cells) {
+                continue;
+            }
             int c = k % cellsAcross;
             int r = k / cellsAcross;
             box[0] = Math.min(box[0], c);
@@ -136,22 +154,24 @@ final class Rasterizer {
      * @param depth inverse depths of the whole picture, 0 to start with
      * @param texU  texture x of the whole picture
      * @param texV  texture y of the whole picture
+     * @param wall  true where the nearest fragment is the base's wall
      */
-    void drawBand(int band, float[] depth, float[] texU, float[] texV) {
+    void drawBand(int band, float[] depth, float[] texU, float[] texV, boolean[] wall) {
         int y0 = band * BAND;
         int y1 = Math.min(height, y0 + BAND);
-        int w = terrain.width;
+        int cells = cells();
         for (int e = binStart[band]; e < binStart[band + 1]; e++) {
             int k = binCells[e];
-            int r = k / (w - 1);
-            int c = k % (w - 1);
-            int i = r * w + c;
-            triangle(i, i + 1, i + w + 1, y0, y1, depth, texU, texV);
-            triangle(i, i + w + 1, i + w, y0, y1, depth, texU, texV);
+            int[] q = corners(k);
+            boolean isWall = k >= cells;
+            // a cell: NW, NE, SE and NW, SE, SW; a wall: top, next top, next base and top, next base, base
+            triangle(q[0], q[1], q[3], y0, y1, depth, texU, texV, wall, isWall);
+            triangle(q[0], q[3], q[2], y0, y1, depth, texU, texV, wall, isWall);
         }
     }
 
-    private void triangle(int a, int b, int c, int y0, int y1, float[] depth, float[] texU, float[] texV) {
+    private void triangle(int a, int b, int c, int y0, int y1, float[] depth, float[] texU, float[] texV,
+                          boolean[] wall, boolean isWall) {
         double ax = sx[a];
         double ay = sy[a];
         double bx = sx[b];
@@ -192,6 +212,7 @@ final class Rasterizer {
                     depth[p] = (float) z;
                     texU[p] = (float) ((w0 * ua + w1 * ub + w2 * uc) / z);
                     texV[p] = (float) ((w0 * va + w1 * vb + w2 * vc) / z);
+                    wall[p] = isWall;
                 }
             }
         }

@@ -24,8 +24,14 @@ final class Terrain {
     final float[] v;
     /** The frame on the globe (null on a plane). */
     final GlobeFrame globe;
+    /**
+     * The grid's edge vertices in order around it (empty without a base); vertex {@code size() + j} is the base's
+     * vertex under {@code perimeter[j]}.
+     */
+    final int[] perimeter;
 
-    private Terrain(int width, int height, float[] x, float[] y, float[] z, float[] u, float[] v, GlobeFrame globe) {
+    private Terrain(int width, int height, float[] x, float[] y, float[] z, float[] u, float[] v, GlobeFrame globe,
+                    int[] perimeter) {
         this.width = width;
         this.height = height;
         this.x = x;
@@ -34,6 +40,7 @@ final class Terrain {
         this.u = u;
         this.v = v;
         this.globe = globe;
+        this.perimeter = perimeter;
     }
 
     /**
@@ -64,7 +71,56 @@ final class Terrain {
         } else {
             placeOnPlane(dem, options.exaggeration(), x, y, z);
         }
-        return new Terrain(w, h, x, y, z, u, v, frame);
+        Terrain t = new Terrain(w, h, x, y, z, u, v, frame, new int[0]);
+        return options.base() && !options.globe() && w >= 2 && h >= 2 ? t.withBase() : t;
+    }
+
+    /**
+     * This terrain with base vertices under its edge vertices, a tenth of its height range (at least 1 m) below
+     * its lowest point.
+     */
+    private Terrain withBase() {
+        int n = size();
+        float zMin = Float.POSITIVE_INFINITY;
+        float zMax = Float.NEGATIVE_INFINITY;
+        for (float value : z) {
+            if (!Float.isNaN(value)) {
+                zMin = Math.min(zMin, value);
+                zMax = Math.max(zMax, value);
+            }
+        }
+        if (!(zMin <= zMax)) {
+            return this;
+        }
+        float base = zMin - Math.max(1, 0.1f * (zMax - zMin));
+        int[] ring = new int[2 * width + 2 * height - 4];
+        int k = 0;
+        for (int c = 0; c < width; c++) {
+            ring[k++] = c;
+        }
+        for (int r = 1; r < height; r++) {
+            ring[k++] = r * width + width - 1;
+        }
+        for (int c = width - 2; c >= 0; c--) {
+            ring[k++] = (height - 1) * width + c;
+        }
+        for (int r = height - 2; r >= 1; r--) {
+            ring[k++] = r * width;
+        }
+        float[] bx = java.util.Arrays.copyOf(x, n + k);
+        float[] by = java.util.Arrays.copyOf(y, n + k);
+        float[] bz = java.util.Arrays.copyOf(z, n + k);
+        float[] bu = java.util.Arrays.copyOf(u, n + k);
+        float[] bv = java.util.Arrays.copyOf(v, n + k);
+        for (int j = 0; j < k; j++) {
+            int top = ring[j];
+            bx[n + j] = x[top];
+            by[n + j] = y[top];
+            bz[n + j] = Float.isNaN(z[top]) ? Float.NaN : base;
+            bu[n + j] = u[top];
+            bv[n + j] = v[top];
+        }
+        return new Terrain(width, height, bx, by, bz, bu, bv, globe, ring);
     }
 
     /** Cell centres on a plane, ground metres from the grid's centre; heights times the exaggeration. */
@@ -132,8 +188,13 @@ final class Terrain {
         return frame;
     }
 
-    /** @return the number of vertices */
+    /** @return the number of the grid's vertices (the base's follow them) */
     int size() {
         return width * height;
+    }
+
+    /** @return the number of vertices, the base's included */
+    int vertexCount() {
+        return x.length;
     }
 }

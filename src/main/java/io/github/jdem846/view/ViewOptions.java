@@ -10,8 +10,11 @@ package io.github.jdem846.view;
  * @param globe        true: the terrain lies on the body's ellipsoid at its latitudes and longitudes (radius + height
  *                     × exaggeration), the rest of the body drawn plain; false: on a plane, distances measured on
  *                     the ground in metres
+ * @param base         on a plane, draw walls from the terrain's edges down to a base below its lowest point (a
+ *                     tenth of its height range, and at least 1 m, lower), in the edge's colours darkened
  */
-public record ViewOptions(double exaggeration, int skyTop, int skyHorizon, int bodyColor, boolean globe) {
+public record ViewOptions(double exaggeration, int skyTop, int skyHorizon, int bodyColor, boolean globe,
+                          boolean base) {
 
     /** Default sky straight up: a clear blue. */
     public static final int SKY_TOP = 0xFF5B8CC6;
@@ -30,12 +33,22 @@ public record ViewOptions(double exaggeration, int skyTop, int skyHorizon, int b
     }
 
     /**
-     * A flat view: exaggeration 1, blue sky with a hazy horizon.
+     * A flat view: exaggeration 1, blue sky with a hazy horizon, a base under the terrain.
      *
      * @return the options
      */
     public static ViewOptions defaults() {
-        return new ViewOptions(1, SKY_TOP, SKY_HORIZON, BODY, false);
+        return new ViewOptions(1, SKY_TOP, SKY_HORIZON, BODY, false, true);
+    }
+
+    /**
+     * A copy with or without the base.
+     *
+     * @param value true for walls from the terrain's edges down to a base (on a plane)
+     * @return the new options
+     */
+    public ViewOptions withBase(boolean value) {
+        return new ViewOptions(exaggeration, skyTop, skyHorizon, bodyColor, globe, value);
     }
 
     /**
@@ -45,7 +58,7 @@ public record ViewOptions(double exaggeration, int skyTop, int skyHorizon, int b
      * @return the new options
      */
     public ViewOptions withExaggeration(double value) {
-        return new ViewOptions(value, skyTop, skyHorizon, bodyColor, globe);
+        return new ViewOptions(value, skyTop, skyHorizon, bodyColor, globe, base);
     }
 
     /**
@@ -56,7 +69,7 @@ public record ViewOptions(double exaggeration, int skyTop, int skyHorizon, int b
      * @return the new options
      */
     public ViewOptions withSky(int top, int horizon) {
-        return new ViewOptions(exaggeration, top, horizon, bodyColor, globe);
+        return new ViewOptions(exaggeration, top, horizon, bodyColor, globe, base);
     }
 
     /**
@@ -66,7 +79,7 @@ public record ViewOptions(double exaggeration, int skyTop, int skyHorizon, int b
      * @return the new options
      */
     public ViewOptions withGlobe(boolean value) {
-        return value ? new ViewOptions(exaggeration, SPACE, SPACE, bodyColor, true)
-                : new ViewOptions(exaggeration, skyTop, skyHorizon, bodyColor, false);
+        return value ? new ViewOptions(exaggeration, SPACE, SPACE, bodyColor, true, base)
+                : new ViewOptions(exaggeration, skyTop, skyHorizon, bodyColor, false, base);
     }
 }

@@ -196,6 +196,54 @@ class PerspectiveRendererTest {
         assertArrayEquals(new int[] {0, 0, 39, 39}, far);
     }
 
+    /**
+     * No-data cells are holes: straight down on a flat 40 × 40 grid whose middle 10 × 10 cells are no-data, the
+     * middle of the picture is background and a point well inside the valid ring is terrain.
+     */
+    @Test
+    void noDataCellsAreHoles() throws Exception {
+        int n = 40;
+        float[] heights = new float[n * n];
+        for (int r = 15; r < 25; r++) {
+            Arrays.fill(heights, r * n + 15, r * n + 25, Float.NaN);
+        }
+        GridGeometry g = GridGeometry.metric(n, n, 10);
+        int[] texture = new int[n * n];
+        Arrays.fill(texture, 0xFF20A040);
+        double distance = n * 10 / 2 / Math.tan(Math.toRadians(20));
+        RenderedView view = new PerspectiveRenderer(new RenderSettings(2, 64)).render(new Dem(heights, g),
+                new RenderedRelief(n, n, texture, g), new Camera(180, 90, distance, 40, n, n), ViewOptions.defaults(),
+                RenderProgress.NONE);
+        assertTrue(view.argb()[20 * n + 20] != 0xFF20A040, "the hole shows the background");
+        assertEquals(0xFF20A040, view.argb()[5 * n + 5], "the terrain around it is drawn");
+    }
+
+    /**
+     * The base: seen from 20° above the horizon, a grid textured in one colour shows walls below its near edge
+     * in that colour at {@link PerspectiveRenderer#WALL_BRIGHTNESS} (200 → 90); without the base, none.
+     */
+    @Test
+    void theBaseIsDrawnBelowTheEdges() throws Exception {
+        int n = 20;
+        GridGeometry g = GridGeometry.metric(n, n, 10);
+        int[] texture = new int[n * n];
+        Arrays.fill(texture, 0xFFC8C8C8);
+        Camera camera = new Camera(180, 20, 0, 40, 200, 150);
+        PerspectiveRenderer renderer = new PerspectiveRenderer(new RenderSettings(2, 64));
+        RenderedRelief relief = new RenderedRelief(n, n, texture, g);
+        float[] ramp = new float[n * n];
+        for (int i = 0; i < ramp.length; i++) {
+            ramp[i] = 5 * (i / n); // 0 m in the north to 95 m in the south: a base 9.5 m below 0
+        }
+        Dem sloped = new Dem(ramp, g);
+        long with = Arrays.stream(renderer.render(sloped, relief, camera, ViewOptions.defaults(), RenderProgress.NONE)
+                .argb()).filter(c -> c == 0xFF5A5A5A).count();
+        long without = Arrays.stream(renderer.render(sloped, relief, camera, ViewOptions.defaults().withBase(false),
+                RenderProgress.NONE).argb()).filter(c -> c == 0xFF5A5A5A).count();
+        assertTrue(with > 100, "wall pixels: " + with);
+        assertEquals(0, without);
+    }
+
     private static int maxChannelDifference(int a, int b) {
         int d = 0;
         for (int shift = 0; shift <= 16; shift += 8) {
