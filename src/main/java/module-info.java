@@ -24,6 +24,7 @@ module io.github.jdem846 {
     exports io.github.jdem846.sun;
     exports io.github.jdem846.tiles;
     exports io.github.jdem846.tint;
+    exports io.github.jdem846.view;
 
     // BufferedImage and RenderedRelief in the API; ImageIO for reading and writing
     requires transitive java.desktop;

@@ -29,6 +29,7 @@ public final class Main implements Runnable {
     private static final List<Map.Entry<String, Supplier<Object>>> SUBCOMMANDS = List.of(
             Map.entry("help", CommandLine.HelpCommand::new),
             Map.entry("render", RenderCommand::new),
+            Map.entry("view", ViewCommand::new),
             Map.entry("hillshade", HillshadeCommand::new),
             Map.entry("tint", TintCommand::new),
             Map.entry("shadows", ShadowsCommand::new),

@@ -10,7 +10,7 @@ import picocli.CommandLine;
 
 class MainTest {
 
-    private static final Set<String> ALL = Set.of("help", "render", "hillshade", "tint", "shadows", "tiles", "info",
+    private static final Set<String> ALL = Set.of("help", "render", "view", "hillshade", "tint", "shadows", "tiles", "info",
             "sun", "completion");
 
     @Test

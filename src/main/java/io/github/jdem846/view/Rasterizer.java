@@ -1,0 +1,220 @@
+package io.github.jdem846.view;
+
+/**
+ * Draws the terrain's triangles, two per cell (the diagonal from the cell's north-west to its south-east vertex),
+ * and those of the base's walls, two per edge segment, into a depth buffer with perspective-correct texture positions. The picture is cut into bands of {@value #BAND}
+ * rows; each band owns its pixels and draws the triangles binned to it in the same order (cell by cell, row 0
+ * first), every pixel tested at its own centre, and the nearer of two fragments wins (the first drawn on a tie): so
+ * a pixel's value does not depend on how many bands there are or which thread draws them.
+ */
+final class Rasterizer {
+
+    /** Rows per band. */
+    static final int BAND = 32;
+
+    private final Terrain terrain;
+    private final int width;
+    private final int height;
+    private final float[] sx;
+    private final float[] sy;
+    private final float[] iz;
+    private int[] binStart;
+    private int[] binCells;
+
+    /**
+     * Projects the terrain's vertices: a vertex that is no-data or nearer than {@link Pose#near} gets NaN and its
+     * triangles are not drawn.
+     */
+    Rasterizer(Terrain terrain, Pose pose, int width, int height) {
+        this.terrain = terrain;
+        this.width = width;
+        this.height = height;
+        int n = terrain.vertexCount();
+        sx = new float[n];
+        sy = new float[n];
+        iz = new float[n];
+        for (int i = 0; i < n; i++) {
+            double x = terrain.x[i];
+            double y = terrain.y[i];
+            double z = terrain.z[i];
+            double d = pose.depth(x, y, z);
+            if (Double.isNaN(z) || !(d > pose.near)) {
+                sx[i] = Float.NaN;
+                sy[i] = Float.NaN;
+                iz[i] = Float.NaN;
+                continue;
+            }
+            sx[i] = (float) pose.screenX(x, y, z);
+            sy[i] = (float) pose.screenY(x, y, z);
+            iz[i] = (float) (1 / d);
+        }
+        bin();
+    }
+
+    /** @return the number of bands */
+    int bands() {
+        return (height + BAND - 1) / BAND;
+    }
+
+    /** The number of cells; items from here on are the base's walls, one per edge segment. */
+    private int cells() {
+        return (terrain.width - 1) * (terrain.height - 1);
+    }
+
+    /** The four vertices of item {@code k}: a cell's, or a wall's (two on the edge, the two under them). */
+    private int[] corners(int k) {
+        int w = terrain.width;
+        int cells = cells();
+        if (k < cells) {
+            int i = (k / (w - 1)) * w + k % (w - 1);
+            return new int[] {i, i + 1, i + w, i + w + 1};
+        }
+        int j = k - cells;
+        int next = (j + 1) % terrain.perimeter.length;
+        int n = terrain.size();
+        return new int[] {terrain.perimeter[j], terrain.perimeter[next], n + j, n + next};
+    }
+
+    /** Lists, band by band in item order (cells, then walls), the items whose projection may touch the band. */
+    private void bin() {
+        int bands = bands();
+        int items = cells() + terrain.perimeter.length;
+        int[] first = new int[Math.max(0, items)];
+        int[] last = new int[Math.max(0, items)];
+        int[] count = new int[bands + 1];
+        for (int k = 0; k < items; k++) {
+            float minX = Float.POSITIVE_INFINITY;
+            float maxX = Float.NEGATIVE_INFINITY;
+            float minY = Float.POSITIVE_INFINITY;
+            float maxY = Float.NEGATIVE_INFINITY;
+            int valid = 0;
+            for (int j : corners(k)) {
+                if (!Float.isNaN(sx[j])) {
+                    valid++;
+                    minX = Math.min(minX, sx[j]);
+                    maxX = Math.max(maxX, sx[j]);
+                    minY = Math.min(minY, sy[j]);
+                    maxY = Math.max(maxY, sy[j]);
+                }
+            }
+            first[k] = -1;
+            if (valid < 3 || maxX < 0 || minX > width || maxY < 0 || minY > height) {
+                continue;
+            }
+            int b0 = (int) Math.max(0, Math.floor((minY - 0.5) / BAND));
+            int b1 = (int) Math.min(bands - 1, Math.floor((maxY - 0.5) / BAND));
+            if (b1 < b0) {
+                continue;
+            }
+            first[k] = b0;
+            last[k] = b1;
+            for (int b = b0; b <= b1; b++) {
+                count[b + 1]++;
+            }
+        }
+        binStart = new int[bands + 1];
+        for (int b = 0; b < bands; b++) {
+            binStart[b + 1] = binStart[b] + count[b + 1];
+        }
+        binCells = new int[binStart[bands]];
+        int[] fill = binStart.clone();
+        for (int k = 0; k < items; k++) {
+            for (int b = first[k]; b >= 0 && b <= last[k]; b++) {
+                binCells[fill[b]++] = k;
+            }
+        }
+    }
+
+    /**
+     * The cells whose triangles may be drawn: {firstCol, firstRow, lastCol, lastRow} of the terrain's cells that
+     * overlap the picture, or null when none does.
+     */
+    int[] drawnCells() {
+        int cellsAcross = terrain.width - 1;
+        int cells = cells();
+        int[] box = {Integer.MAX_VALUE, Integer.MAX_VALUE, -1, -1};
+        for (int k : binCells) {
+            if (k >= cells) {
+                continue;
+            }
+            int c = k % cellsAcross;
+            int r = k / cellsAcross;
+            box[0] = Math.min(box[0], c);
+            box[1] = Math.min(box[1], r);
+            box[2] = Math.max(box[2], c);
+            box[3] = Math.max(box[3], r);
+        }
+        return box[2] < 0 ? null : box;
+    }
+
+    /**
+     * Draws band {@code band}: for each of its pixels covered by terrain, the inverse depth (0 where none) and the
+     * texture position.
+     *
+     * @param depth inverse depths of the whole picture, 0 to start with
+     * @param texU  texture x of the whole picture
+     * @param texV  texture y of the whole picture
+     * @param wall  true where the nearest fragment is the base's wall
+     */
+    void drawBand(int band, float[] depth, float[] texU, float[] texV, boolean[] wall) {
+        int y0 = band * BAND;
+        int y1 = Math.min(height, y0 + BAND);
+        int cells = cells();
+        for (int e = binStart[band]; e < binStart[band + 1]; e++) {
+            int k = binCells[e];
+            int[] q = corners(k);
+            boolean isWall = k >= cells;
+            // a cell: NW, NE, SE and NW, SE, SW; a wall: top, next top, next base and top, next base, base
+            triangle(q[0], q[1], q[3], y0, y1, depth, texU, texV, wall, isWall);
+            triangle(q[0], q[3], q[2], y0, y1, depth, texU, texV, wall, isWall);
+        }
+    }
+
+    private void triangle(int a, int b, int c, int y0, int y1, float[] depth, float[] texU, float[] texV,
+                          boolean[] wall, boolean isWall) {
+        double ax = sx[a];
+        double ay = sy[a];
+        double bx = sx[b];
+        double by = sy[b];
+        double cx = sx[c];
+        double cy = sy[c];
+        double area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+        if (!(Math.abs(area) > 1e-12)) {
+            return; // degenerate, or a vertex is NaN
+        }
+        int xs = (int) Math.max(0, Math.ceil(Math.min(ax, Math.min(bx, cx)) - 0.5));
+        int xe = (int) Math.min(width - 1, Math.floor(Math.max(ax, Math.max(bx, cx)) - 0.5));
+        int ys = (int) Math.max(y0, Math.ceil(Math.min(ay, Math.min(by, cy)) - 0.5));
+        int ye = (int) Math.min(y1 - 1, Math.floor(Math.max(ay, Math.max(by, cy)) - 0.5));
+        double za = iz[a];
+        double zb = iz[b];
+        double zc = iz[c];
+        double ua = terrain.u[a] * za;
+        double ub = terrain.u[b] * zb;
+        double uc = terrain.u[c] * zc;
+        double va = terrain.v[a] * za;
+        double vb = terrain.v[b] * zb;
+        double vc = terrain.v[c] * zc;
+        double inverse = 1 / area;
+        for (int py = ys; py <= ye; py++) {
+            double y = py + 0.5;
+            for (int px = xs; px <= xe; px++) {
+                double x = px + 0.5;
+                double w0 = ((cx - bx) * (y - by) - (cy - by) * (x - bx)) * inverse;
+                double w1 = ((ax - cx) * (y - cy) - (ay - cy) * (x - cx)) * inverse;
+                double w2 = ((bx - ax) * (y - ay) - (by - ay) * (x - ax)) * inverse;
+                if (w0 < 0 || w1 < 0 || w2 < 0) {
+                    continue;
+                }
+                double z = w0 * za + w1 * zb + w2 * zc;
+                int p = py * width + px;
+                if (z > depth[p]) {
+                    depth[p] = (float) z;
+                    texU[p] = (float) ((w0 * ua + w1 * ub + w2 * uc) / z);
+                    texV[p] = (float) ((w0 * va + w1 * vb + w2 * vc) / z);
+                    wall[p] = isWall;
+                }
+            }
+        }
+    }
+}

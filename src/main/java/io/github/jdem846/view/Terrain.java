@@ -1,0 +1,200 @@
+package io.github.jdem846.view;
+
+import io.github.jdem846.geo.Ellipsoid;
+import io.github.jdem846.geo.GeoLocator;
+import io.github.jdem846.geo.LatLon;
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.GridGeometry;
+
+/**
+ * The terrain as a mesh: one vertex per cell centre, in metres in a local east–north–up frame whose origin is the
+ * grid's centre at height 0, with the texture position (in pixels of the relief picture) of each. On a plane,
+ * east–west and north–south distances are the cells' sizes on the ground ({@link GridGeometry#cellWidthMeters},
+ * row by row for a latitude/longitude grid); on the globe, each vertex is placed on the body's ellipsoid at its
+ * latitude and longitude. A no-data cell's vertex is NaN: the triangles touching it are holes.
+ */
+final class Terrain {
+
+    final int width;
+    final int height;
+    final float[] x;
+    final float[] y;
+    final float[] z;
+    final float[] u;
+    final float[] v;
+    /** The frame on the globe (null on a plane). */
+    final GlobeFrame globe;
+    /**
+     * The grid's edge vertices in order around it (empty without a base); vertex {@code size() + j} is the base's
+     * vertex under {@code perimeter[j]}.
+     */
+    final int[] perimeter;
+
+    private Terrain(int width, int height, float[] x, float[] y, float[] z, float[] u, float[] v, GlobeFrame globe,
+                    int[] perimeter) {
+        this.width = width;
+        this.height = height;
+        this.x = x;
+        this.y = y;
+        this.z = z;
+        this.u = u;
+        this.v = v;
+        this.globe = globe;
+        this.perimeter = perimeter;
+    }
+
+    /**
+     * The mesh of {@code dem} textured by a picture covering {@code texture}.
+     *
+     * @throws IllegalArgumentException in globe mode when the grid's CRS gives no latitude and longitude
+     */
+    static Terrain of(Dem dem, GridGeometry texture, ViewOptions options) {
+        int w = dem.width();
+        int h = dem.height();
+        int n = w * h;
+        float[] x = new float[n];
+        float[] y = new float[n];
+        float[] z = new float[n];
+        float[] u = new float[n];
+        float[] v = new float[n];
+        GridGeometry g = dem.geometry();
+        for (int r = 0; r < h; r++) {
+            float vr = (float) ((texture.originY() - g.centerY(r)) / texture.cellHeight() - 0.5);
+            for (int c = 0; c < w; c++) {
+                u[r * w + c] = (float) ((g.centerX(c) - texture.originX()) / texture.cellWidth() - 0.5);
+                v[r * w + c] = vr;
+            }
+        }
+        GlobeFrame frame = null;
+        if (options.globe()) {
+            frame = placeOnGlobe(dem, options.exaggeration(), x, y, z);
+        } else {
+            placeOnPlane(dem, options.exaggeration(), x, y, z);
+        }
+        Terrain t = new Terrain(w, h, x, y, z, u, v, frame, new int[0]);
+        return options.base() && !options.globe() && w >= 2 && h >= 2 ? t.withBase() : t;
+    }
+
+    /**
+     * This terrain with base vertices under its edge vertices, a tenth of its height range (at least 1 m) below
+     * its lowest point.
+     */
+    private Terrain withBase() {
+        int n = size();
+        float zMin = Float.POSITIVE_INFINITY;
+        float zMax = Float.NEGATIVE_INFINITY;
+        for (float value : z) {
+            if (!Float.isNaN(value)) {
+                zMin = Math.min(zMin, value);
+                zMax = Math.max(zMax, value);
+            }
+        }
+        if (!(zMin <= zMax)) {
+            return this;
+        }
+        float base = zMin - Math.max(1, 0.1f * (zMax - zMin));
+        int[] ring = new int[2 * width + 2 * height - 4];
+        int k = 0;
+        for (int c = 0; c < width; c++) {
+            ring[k++] = c;
+        }
+        for (int r = 1; r < height; r++) {
+            ring[k++] = r * width + width - 1;
+        }
+        for (int c = width - 2; c >= 0; c--) {
+            ring[k++] = (height - 1) * width + c;
+        }
+        for (int r = height - 2; r >= 1; r--) {
+            ring[k++] = r * width;
+        }
+        float[] bx = java.util.Arrays.copyOf(x, n + k);
+        float[] by = java.util.Arrays.copyOf(y, n + k);
+        float[] bz = java.util.Arrays.copyOf(z, n + k);
+        float[] bu = java.util.Arrays.copyOf(u, n + k);
+        float[] bv = java.util.Arrays.copyOf(v, n + k);
+        for (int j = 0; j < k; j++) {
+            int top = ring[j];
+            bx[n + j] = x[top];
+            by[n + j] = y[top];
+            bz[n + j] = Float.isNaN(z[top]) ? Float.NaN : base;
+            bu[n + j] = u[top];
+            bv[n + j] = v[top];
+        }
+        return new Terrain(width, height, bx, by, bz, bu, bv, globe, ring);
+    }
+
+    /** Cell centres on a plane, ground metres from the grid's centre; heights times the exaggeration. */
+    private static void placeOnPlane(Dem dem, double exaggeration, float[] x, float[] y, float[] z) {
+        int w = dem.width();
+        int h = dem.height();
+        GridGeometry g = dem.geometry();
+        double[] rowY = new double[h];
+        double previous = g.cellHeightMeters(0);
+        for (int r = 1; r < h; r++) {
+            double here = g.cellHeightMeters(r);
+            rowY[r] = rowY[r - 1] - 0.5 * (previous + here);
+            previous = here;
+        }
+        double midY = 0.5 * (rowY[(h - 1) / 2] + rowY[h / 2]);
+        double midCol = (w - 1) / 2.0;
+        for (int r = 0; r < h; r++) {
+            double cw = g.cellWidthMeters(r);
+            for (int c = 0; c < w; c++) {
+                int i = r * w + c;
+                x[i] = (float) ((c - midCol) * cw);
+                y[i] = (float) (rowY[r] - midY);
+                z[i] = (float) (dem.get(c, r) * exaggeration);
+            }
+        }
+    }
+
+    /** Cell centres on the ellipsoid at radius + height × exaggeration, in the east–north–up frame of the centre. */
+    private static GlobeFrame placeOnGlobe(Dem dem, double exaggeration, float[] x, float[] y, float[] z) {
+        int w = dem.width();
+        int h = dem.height();
+        GridGeometry g = dem.geometry();
+        GeoLocator locator = g.geoLocator().orElseThrow(() -> new IllegalArgumentException(
+                "globe mode needs latitudes and longitudes, but the grid's CRS ("
+                        + (g.crs().name() == null ? "unknown" : g.crs().name())
+                        + ") cannot be turned into them; draw it without globe mode"));
+        Ellipsoid e = g.ellipsoid();
+        LatLon centre = locator.toLatLon(g.centerX((w - 1) / 2.0), g.centerY((h - 1) / 2.0));
+        GlobeFrame frame = GlobeFrame.at(e, centre.latitude(), centre.longitude());
+        double[] p = new double[3];
+        double[] local = new double[3];
+        for (int r = 0; r < h; r++) {
+            for (int c = 0; c < w; c++) {
+                int i = r * w + c;
+                float elevation = dem.get(c, r);
+                LatLon at;
+                try {
+                    at = locator.toLatLon(g.centerX(c), g.centerY(r));
+                } catch (IllegalArgumentException outsideProjection) {
+                    at = null;
+                }
+                if (Float.isNaN(elevation) || at == null) {
+                    x[i] = Float.NaN;
+                    y[i] = Float.NaN;
+                    z[i] = Float.NaN;
+                    continue;
+                }
+                frame.ecef(at.latitude(), at.longitude(), elevation * exaggeration, p);
+                frame.toLocal(p, local);
+                x[i] = (float) local[0];
+                y[i] = (float) local[1];
+                z[i] = (float) local[2];
+            }
+        }
+        return frame;
+    }
+
+    /** @return the number of the grid's vertices (the base's follow them) */
+    int size() {
+        return width * height;
+    }
+
+    /** @return the number of vertices, the base's included */
+    int vertexCount() {
+        return x.length;
+    }
+}
