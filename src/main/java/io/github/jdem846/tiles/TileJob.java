@@ -6,6 +6,7 @@ import io.github.jdem846.io.DemReader;
 import io.github.jdem846.job.JobListener;
 import io.github.jdem846.job.Sun;
 import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.output.InputProtection;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Scene;
@@ -132,17 +133,19 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * it is none of the input files.
      *
      * @return the format {@code output} names
+     * @throws io.github.jdem846.output.OutputOverwritesInputException when {@code output} is an input file or its
+     *                                  sidecar, however spelt (a symbolic link, a relative path)
      * @throws IOException              naming the output and what is wrong
      * @throws IllegalArgumentException for a format that is not written
      */
     public TileFormat checkOutput(Path output) throws IOException {
         TileFormat format = TileFormat.of(output);
+        InputProtection.checkFile(output, DemReader.filesOf(input));
         if (format == TileFormat.PMTILES) {
             PmTilesSink.checkTarget(output);
         } else {
             DirectorySink.checkTarget(output);
         }
-        refuseInputAsOutput(output);
         return format;
     }
 
@@ -179,14 +182,5 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
         }
         Scene s = scene.withLight(direction).withFade(fade).withTintRange(range);
         return s.hasShadows() ? s.withShadowOptions(s.shadowOptions().withTerrainMinimum(range.min())) : s;
-    }
-
-    private void refuseInputAsOutput(Path output) throws IOException {
-        Path out = output.toAbsolutePath().normalize();
-        for (Path f : DemReader.filesOf(input)) {
-            if (f.toAbsolutePath().normalize().equals(out)) {
-                throw new IOException("the output " + output + " is the input DEM " + f + ": name another output");
-            }
-        }
     }
 }
