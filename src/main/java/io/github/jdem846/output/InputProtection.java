@@ -54,10 +54,13 @@ public final class InputProtection {
         if (!Files.exists(out)) {
             return;   // a file that does not exist yet cannot be an input
         }
-        for (Path in : Objects.requireNonNull(inputFiles, "inputFiles")) {
+        Objects.requireNonNull(inputFiles, "inputFiles");
+        for (Path in : inputFiles) {
             if (Files.exists(in) && Files.isSameFile(out, in)) {
                 throw new OutputOverwritesInputException(out, in, image, null);
             }
+        }
+        for (Path in : inputFiles) {
             for (Path sidecar : sidecarsOf(in)) {
                 if (Files.exists(sidecar) && Files.isSameFile(out, sidecar)) {
                     throw new OutputOverwritesInputException(out, sidecar, image, in);
