@@ -1,5 +1,6 @@
 package io.github.jdem846.job;
 
+import io.github.jdem846.internal.Interrupts;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemInput;
 import io.github.jdem846.io.DemReader;
@@ -275,6 +276,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
             InsufficientHeapException.requireFits(plan.gridCells(), plan.width(), plan.height(),
                     JobMemory.of(product, s).perPixel(), Runtime.getRuntime().maxMemory());
             return renderInMemory(in.input(), planned, s, listener);
+        } catch (IOException e) {
+            throw Interrupts.interruptedOr(e);
         }
     }
 
@@ -378,6 +381,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
             } else {
                 written = renderInTiles(in.input(), planned, s, sink, listener, layouts);
             }
+        } catch (IOException e) {
+            throw Interrupts.interruptedOr(e);
         }
         written.notices().forEach(listener::notice);
         listener.phaseDone("write");

@@ -1,5 +1,6 @@
 package io.github.jdem846.tiles;
 
+import io.github.jdem846.internal.Interrupts;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemInput;
 import io.github.jdem846.io.DemReader;
@@ -114,17 +115,21 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
         Objects.requireNonNull(listener, "listener");
         requireTileable();
         TileFormat format = checkOutput(output);
-        TilePlan plan = TilePlan.prepare(this, listener);
-        try (TileSink sink = TileSink.open(output)) {
-            TileReport report = new PyramidRun(plan, sink, listener).execute(output, format);
-            listener.phaseDone("render");
-            if (report.written() == 0) {
-                throw new IOException("no tile of zoom " + zooms + " holds data of " + input.first()
-                        + ": nothing written");
+        try {
+            TilePlan plan = TilePlan.prepare(this, listener);
+            try (TileSink sink = TileSink.open(output)) {
+                TileReport report = new PyramidRun(plan, sink, listener).execute(output, format);
+                listener.phaseDone("render");
+                if (report.written() == 0) {
+                    throw new IOException("no tile of zoom " + zooms + " holds data of " + input.first()
+                            + ": nothing written");
+                }
+                sink.commit(plan.tileSetInfo());
+                listener.phaseDone("write");
+                return report;
             }
-            sink.commit(plan.tileSetInfo());
-            listener.phaseDone("write");
-            return report;
+        } catch (IOException e) {
+            throw Interrupts.interruptedOr(e);
         }
     }
 
