@@ -207,6 +207,7 @@ class BadInputMatrixTest {
                 rows.add(row(2, base + "--zoom 99999999999", "--zoom", "99999999999"));
                 rows.add(row(2, base + "--zoom abc", "--zoom", "abc"));
                 rows.add(row(2, base + "--png-level 10", "--png-level", "10"));
+                rows.add(row(2, base + "--memory 512m", "--memory does not apply to tiles"));
                 continue;
             }
             rows.add(row(2, base + "--width 0", "--width", "got 0", "1 to 100000"));
