@@ -114,6 +114,10 @@ public final class TilesCommand implements Callable<Integer> {
             throw Usage.error(spec, "--xy-scale does not apply to tiles: their cells are measured in ground metres "
                     + "row by row");
         }
+        if (execution.memory != null) {
+            throw Usage.error(spec, "--memory does not apply to tiles: they are read and rendered in blocks of "
+                    + "at most 4 × 4 tiles, whatever the zoom");
+        }
         if (sun.perTile) {
             throw Usage.error(spec, "--sun-per-tile does not apply to tiles: every tile gets the sun seen from the "
                     + "DEM's centre (or --sun-at), so that the light matches across tiles");

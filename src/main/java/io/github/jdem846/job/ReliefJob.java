@@ -1,5 +1,6 @@
 package io.github.jdem846.job;
 
+import io.github.jdem846.internal.Interrupts;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemInput;
 import io.github.jdem846.io.DemReader;
@@ -268,26 +269,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
                     JobMemory.of(product, s).perPixel(), Runtime.getRuntime().maxMemory());
             return renderInMemory(in, planned, s, listener);
         } catch (IOException e) {
-            throw interruptedOr(e);
+            throw Interrupts.interruptedOr(e);
         }
-    }
-
-    /**
-     * An I/O failure of a thread that was interrupted meanwhile (a channel closed by the interrupt, a read or write
-     * stopped) as the {@link InterruptedException} it is, the interrupt status cleared; any other as it is.
-     *
-     * @param failure what a read or write threw
-     * @return the failure to rethrow, when it is not an interrupt
-     * @throws InterruptedException when the calling thread was interrupted
-     */
-    static IOException interruptedOr(IOException failure) throws InterruptedException {
-        if (Thread.interrupted() || failure instanceof java.io.InterruptedIOException
-                || failure instanceof java.nio.channels.ClosedByInterruptException) {
-            InterruptedException e = new InterruptedException("job cancelled");
-            e.initCause(failure);
-            throw e;
-        }
-        return failure;
     }
 
     /**
@@ -401,7 +384,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
                 written = renderInTiles(in, planned, s, sink, listener, layouts);
             }
         } catch (IOException e) {
-            throw interruptedOr(e);
+            throw Interrupts.interruptedOr(e);
         }
         written.notices().forEach(listener::notice);
         listener.phaseDone("write");

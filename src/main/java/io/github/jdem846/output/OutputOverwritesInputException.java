@@ -4,7 +4,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 
 /**
- * An output file that is one of the input's files: writing it would destroy the input. Thrown by
+ * An output file that is one of the input's files or their sidecars: writing it would destroy the input. Thrown by
  * {@link InputProtection} before any work; the CLI reports it as bad usage (exit status 2).
  */
 public final class OutputOverwritesInputException extends IOException {
@@ -15,21 +15,25 @@ public final class OutputOverwritesInputException extends IOException {
     private final transient Path input;
 
     /**
-     * @param output the file that would be written
-     * @param input  the input file it is
-     * @param image  the image whose sidecar {@code output} is, or {@code null} when {@code output} is the image
+     * @param output    the file that would be written
+     * @param input     the input file it is
+     * @param image     the image whose sidecar {@code output} is, or {@code null} when {@code output} is the image
+     * @param sidecarOf the input data file whose sidecar {@code input} is, or {@code null} when {@code input} is
+     *                  read itself
      */
-    OutputOverwritesInputException(Path output, Path input, Path image) {
-        super(message(output, input, image));
+    OutputOverwritesInputException(Path output, Path input, Path image, Path sidecarOf) {
+        super(message(output, input, image, sidecarOf));
         this.output = output;
         this.input = input;
     }
 
-    private static String message(Path output, Path input, Path image) {
+    private static String message(Path output, Path input, Path image, Path sidecarOf) {
         String what = image == null ? "cannot write " + output
                 : "cannot write " + output + " (a sidecar of " + image + ")";
-        String which = output.equals(input) ? "it is the input file itself"
-                : "it is the input file " + input + " (the same file)";
+        String same = output.equals(input) ? "" : " (the same file)";
+        String which = sidecarOf != null ? "it is " + input + same + ", a sidecar of the input file " + sidecarOf
+                : output.equals(input) ? "it is the input file itself"
+                : "it is the input file " + input + same;
         return what + ": " + which + ", which would be lost; choose another output name";
     }
 

@@ -1,5 +1,6 @@
 package io.github.jdem846.output;
 
+import io.github.jdem846.internal.IoMessages;
 import java.io.IOException;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
@@ -53,22 +54,22 @@ final class StagedFiles implements AutoCloseable {
     static void checkWritable(Path target) throws IOException {
         Path dir = directoryOf(target);
         if (!Files.exists(dir)) {
-            throw new NoSuchFileException(target.toString(), null,
+            throw new NoSuchFileException(null, null,
                     "cannot write " + target + ": directory " + dir + " does not exist");
         }
         if (!Files.isDirectory(dir)) {
             throw new IOException("cannot write " + target + ": " + dir + " is not a directory");
         }
         if (!Files.isWritable(dir)) {
-            throw new AccessDeniedException(target.toString(), null,
+            throw new AccessDeniedException(null, null,
                     "cannot write " + target + ": directory " + dir + " is not writable");
         }
         if (Files.isDirectory(target)) {
-            throw new FileAlreadyExistsException(target.toString(), null,
+            throw new FileAlreadyExistsException(null, null,
                     "cannot write " + target + ": a directory of that name exists");
         }
         if (Files.exists(target) && isReadOnly(target)) {
-            throw new AccessDeniedException(target.toString(), null,
+            throw new AccessDeniedException(null, null,
                     "cannot write " + target + ": the existing file is read-only and was left unchanged");
         }
     }
@@ -189,7 +190,8 @@ final class StagedFiles implements AutoCloseable {
                     throw withTarget(e, target);
                 }
             } catch (IOException e) {
-                throw withTarget(e, target);
+                throw new IOException("cannot write " + target + ": cannot create a file in " + dir + ": "
+                        + IoMessages.reason(e), e);
             }
         }
     }
@@ -202,13 +204,9 @@ final class StagedFiles implements AutoCloseable {
         return parent;
     }
 
-    /** {@code e}, or an IOException wrapping it, whose message names {@code target}. */
+    /** {@code e}, or an IOException wrapping it, whose one-line message names {@code target} ({@link IoMessages}). */
     static IOException withTarget(IOException e, Path target) {
-        String message = e.getMessage();
-        if (message != null && message.contains(target.toString())) {
-            return e;
-        }
-        return new IOException("cannot write " + target + ": " + e, e);
+        return IoMessages.naming(e, target);
     }
 
     private static void deleteQuietly(Path temp, Throwable cause) {

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletionService;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorCompletionService;
 import java.util.concurrent.ExecutorService;
@@ -42,10 +43,12 @@ final class PyramidRun {
         long all = plan.tileCount();
         StageProgress progress = new StageProgress(listener, "tiles", all).start();
         AtomicInteger threadNumber = new AtomicInteger();
+        List<Thread> threads = new CopyOnWriteArrayList<>();
         ExecutorService pool = Executors.newFixedThreadPool(Math.min(plan.job().execution().parallelism(),
                 Math.max(1, groups.size())), r -> {
                     Thread t = new Thread(r, "jdem846-tiles-" + threadNumber.incrementAndGet());
                     t.setDaemon(true);
+                    threads.add(t);
                     return t;
                 });
         CompletionService<Void> completion = new ExecutorCompletionService<>(pool);
@@ -76,6 +79,9 @@ final class PyramidRun {
             try {
                 while (!pool.awaitTermination(10, TimeUnit.SECONDS)) {
                     // the workers stop at their next tile or stage check
+                }
+                for (Thread t : threads) {
+                    t.join();   // terminated, but a worker may still be ending: none is left when this returns
                 }
             } catch (InterruptedException e) {
                 interrupted = true;

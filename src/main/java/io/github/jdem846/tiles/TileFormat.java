@@ -22,8 +22,8 @@ public enum TileFormat {
             return PMTILES;
         }
         if (n.endsWith(".mbtiles")) {
-            throw new IllegalArgumentException("MBTiles archives are not written: name a .pmtiles archive or a "
-                    + "directory for z/x/y.png tiles");
+            throw new IllegalArgumentException("'" + output + "': MBTiles archives are not written; name a "
+                    + ".pmtiles archive or a directory for z/x/y.png tiles");
         }
         return DIRECTORY;
     }

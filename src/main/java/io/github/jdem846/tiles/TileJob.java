@@ -1,11 +1,13 @@
 package io.github.jdem846.tiles;
 
+import io.github.jdem846.internal.Interrupts;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemInput;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.job.JobListener;
 import io.github.jdem846.job.Sun;
 import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.output.InputProtection;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Scene;
@@ -114,27 +116,21 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
         Objects.requireNonNull(listener, "listener");
         requireTileable();
         TileFormat format = checkOutput(output);
-        TilePlan plan;
         try {
-            plan = TilePlan.prepare(this, listener);
+            TilePlan plan = TilePlan.prepare(this, listener);
+            try (TileSink sink = TileSink.open(output)) {
+                TileReport report = new PyramidRun(plan, sink, listener).execute(output, format);
+                listener.phaseDone("render");
+                if (report.written() == 0) {
+                    throw new IOException("no tile of zoom " + zooms + " holds data of " + input.first()
+                            + ": nothing written");
+                }
+                sink.commit(plan.tileSetInfo());
+                listener.phaseDone("write");
+                return report;
+            }
         } catch (IOException e) {
-            if (Thread.interrupted()) {          // a read stopped by the interrupt, not a broken file
-                InterruptedException ie = new InterruptedException("tiles cancelled while reading");
-                ie.initCause(e);
-                throw ie;
-            }
-            throw e;
-        }
-        try (TileSink sink = TileSink.open(output)) {
-            TileReport report = new PyramidRun(plan, sink, listener).execute(output, format);
-            listener.phaseDone("render");
-            if (report.written() == 0) {
-                throw new IOException("no tile of zoom " + zooms + " holds data of " + input.first()
-                        + ": nothing written");
-            }
-            sink.commit(plan.tileSetInfo());
-            listener.phaseDone("write");
-            return report;
+            throw Interrupts.interruptedOr(e);
         }
     }
 
@@ -143,17 +139,19 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * it is none of the input files.
      *
      * @return the format {@code output} names
+     * @throws io.github.jdem846.output.OutputOverwritesInputException when {@code output} is an input file or its
+     *                                  sidecar, however spelt (a symbolic link, a relative path)
      * @throws IOException              naming the output and what is wrong
      * @throws IllegalArgumentException for a format that is not written
      */
     public TileFormat checkOutput(Path output) throws IOException {
         TileFormat format = TileFormat.of(output);
+        InputProtection.checkFile(output, DemReader.filesOf(input));
         if (format == TileFormat.PMTILES) {
             PmTilesSink.checkTarget(output);
         } else {
             DirectorySink.checkTarget(output);
         }
-        refuseInputAsOutput(output);
         return format;
     }
 
@@ -190,14 +188,5 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
         }
         Scene s = scene.withLight(direction).withFade(fade).withTintRange(range);
         return s.hasShadows() ? s.withShadowOptions(s.shadowOptions().withTerrainMinimum(range.min())) : s;
-    }
-
-    private void refuseInputAsOutput(Path output) throws IOException {
-        Path out = output.toAbsolutePath().normalize();
-        for (Path f : DemReader.filesOf(input)) {
-            if (f.toAbsolutePath().normalize().equals(out)) {
-                throw new IOException("the output " + output + " is the input DEM " + f + ": name another output");
-            }
-        }
     }
 }

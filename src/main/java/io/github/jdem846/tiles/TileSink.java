@@ -1,6 +1,7 @@
 package io.github.jdem846.tiles;
 
 import io.github.jdem846.geo.LatLonBox;
+import io.github.jdem846.internal.IoMessages;
 import java.io.IOException;
 import java.nio.file.Path;
 
@@ -19,7 +20,13 @@ public interface TileSink extends AutoCloseable {
      * @throws IllegalArgumentException for a format that is not written ({@code .mbtiles})
      */
     static TileSink open(Path output) throws IOException {
-        return TileFormat.of(output) == TileFormat.PMTILES ? new PmTilesSink(output) : new DirectorySink(output);
+        TileFormat format = TileFormat.of(output);
+        try {
+            return new FailureNamingSink(format == TileFormat.PMTILES ? new PmTilesSink(output)
+                    : new DirectorySink(output), output);
+        } catch (IOException e) {
+            throw IoMessages.naming(e, output);
+        }
     }
 
     /** Takes one encoded tile. */

@@ -90,4 +90,35 @@ class InputProtectionTest {
         assertDoesNotThrow(() -> InputProtection.check(other,
                 WriteOptions.defaults().withSidecars(WriteOptions.Sidecars.NONE), DemReader.filesOf(flt)));
     }
+
+    @Test
+    void theSidecarsBesideAnInputDataFileAreNamedByTheGisConventions() {
+        Path tif = tmp.resolve("dem.tif");
+        assertEquals(List.of("dem.prj", "dem.hdr", "dem.wld", "dem.tif.aux.xml", "dem.aux.xml", "dem.tfw",
+                "dem.tifw"), InputProtection.sidecarsOf(tif).stream().map(p -> p.getFileName().toString()).toList());
+        assertEquals(List.of("g.prj", "g.hdr", "g.wld", "g.flt.aux.xml", "g.aux.xml", "g.ftw", "g.fltw"),
+                InputProtection.sidecarsOf(tmp.resolve("g.flt")).stream().map(p -> p.getFileName().toString())
+                        .toList());
+        assertEquals(tmp, InputProtection.sidecarsOf(tif).get(0).getParent(), "beside the file");
+    }
+
+    @Test
+    void aGeoTiffsWorldFileAndPrjAreProtectedThoughTheReaderIgnoresThem() throws IOException {
+        Path tif = Files.copy(Path.of(STEM + ".tif"), tmp.resolve("dem.tif"));
+        Files.copy(Path.of(STEM + ".prj"), tmp.resolve("dem.prj"));
+        Files.writeString(tmp.resolve("dem.tfw"), "10\n0\n0\n-10\n0\n0\n");
+        List<Path> inputs = DemReader.filesOf(tif);
+        assertEquals(List.of(tif), inputs, "read from the GeoTIFF alone");
+        OutputOverwritesInputException e = assertThrows(OutputOverwritesInputException.class,
+                () -> InputProtection.check(tmp.resolve("dem.png"), SIDECARS_FOR_PNG, inputs));
+        assertEquals(tmp.resolve("dem.prj"), e.output());
+        assertTrue(e.getMessage().contains("a sidecar of the input file " + tif), e.getMessage());
+        // a tile archive or any single file: the world file, through a relative spelling
+        Path relative = Path.of("").toAbsolutePath().relativize(tmp.resolve("dem.tfw"));
+        OutputOverwritesInputException one = assertThrows(OutputOverwritesInputException.class,
+                () -> InputProtection.checkFile(relative, inputs));
+        assertEquals(tmp.resolve("dem.tfw"), one.input());
+        assertDoesNotThrow(() -> InputProtection.checkFile(tmp.resolve("dem.pmtiles"), inputs));
+        assertDoesNotThrow(() -> InputProtection.check(tmp.resolve("other.png"), SIDECARS_FOR_PNG, inputs));
+    }
 }
