@@ -6,8 +6,8 @@ import java.util.Arrays;
  * The upper convex hulls of the terrain already walked on each line of a block ({@link HorizonSweep}), as points
  * (P, z) with the distance P growing in the walk's direction. From a point beyond every point of a line, the
  * steepest elevation angle to that line's terrain is the angle to the hull's tangent point: the line's horizon. A
- * point lies beyond every point on the hull when it is pushed, and a point below a hull edge can never be a tangent
- * point again, so each sample is pushed and popped at most once.
+ * point below a hull edge can never be a tangent point for any point farther on, so each sample is pushed and popped
+ * at most once, and a query bisects the hull: O(log hull size).
  */
 final class HorizonHulls {
 
@@ -44,27 +44,34 @@ final class HorizonHulls {
 
     /**
      * The steepest slope (z − pz)/(px − x) from (px, pz) to line q's terrain, at least 0 (terrain beyond the grid,
-     * or none, is a horizon at 0°). The slopes to the hull's vertices, from the last one back, rise to the tangent
-     * point and fall after it: the walk stops at the first fall.
+     * or none, is a horizon at 0°): the slope to the hull's tangent point, the first vertex whose next edge's line
+     * passes on or below (px, pz), found by bisection.
      *
      * @param px a distance beyond every sample of the line
      */
     double slope(int q, double px, double pz) {
-        int k = size[q] - 1;
-        if (k < 0) {
+        int n = size[q];
+        if (n == 0) {
             return 0;
         }
         double[] hx = x[q];
         double[] hz = z[q];
-        double best = (hz[k] - pz) / (px - hx[k]);
-        while (k > 0) {
-            double s = (hz[k - 1] - pz) / (px - hx[k - 1]);
-            if (s < best) {
-                break;
-            }
-            best = s;
-            k--;
+        int lo = 0;
+        int hi = n - 1;
+        // often the last vertex, the nearest terrain, is the tangent point: test its edge first
+        if (hi > 0 && (hx[hi] - hx[hi - 1]) * (pz - hz[hi - 1]) - (hz[hi] - hz[hi - 1]) * (px - hx[hi - 1]) < 0) {
+            lo = hi;
         }
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            // (px, pz) on or above the line through vertices mid and mid + 1: the tangent is at mid or before
+            if ((hx[mid + 1] - hx[mid]) * (pz - hz[mid]) - (hz[mid + 1] - hz[mid]) * (px - hx[mid]) >= 0) {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        double best = (hz[lo] - pz) / (px - hx[lo]);
         return best > 0 ? best : 0;
     }
 }

@@ -23,6 +23,12 @@ import java.util.concurrent.ForkJoinPool;
  */
 public final class SkyView {
 
+    /**
+     * Cells of terrain read around a window or a tile for its sky-view factor: a grid read in pieces sees horizons
+     * this far beyond each piece (the whole grid is seen when it is read whole).
+     */
+    public static final int HALO_CELLS = 128;
+
     private SkyView() {
     }
 
