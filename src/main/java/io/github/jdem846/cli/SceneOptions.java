@@ -41,11 +41,11 @@ public final class SceneOptions {
     @Mixin
     ShadowCliOptions shadowOptions;
 
-    @Option(names = "--light-model", paramLabel = "MODEL", defaultValue = "sky",
+    @Option(names = "--light-model", paramLabel = "MODEL", defaultValue = "jdem846",
             converter = Converters.LightModelName.class,
-            description = "How sun, cast shadows and sky light combine: sky (default: direct sun × (1 − shadow) + "
-                    + "ambient × sky-view factor) or jdem846 (the original's: a cast shadow darkens by a fixed "
-                    + "amount).")
+            description = "How sun, cast shadows and sky light combine: jdem846 (the original's, default: a cast "
+                    + "shadow darkens by a fixed amount) or sky (direct sun × (1 − shadow) + ambient × sky-view "
+                    + "factor: shaded terrain lit by the sky it sees).")
     LightModel lightModel;
 
     @Option(names = "--ambient", paramLabel = "0..1", converter = Converters.Ambient.class,
