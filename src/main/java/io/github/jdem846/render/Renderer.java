@@ -20,8 +20,9 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * Renders a {@link Scene} of a {@link Dem} (or of a rectangle of it, the rest serving as halo) into ARGB pixels, one
- * pixel per DEM cell: cast shadows first (parallel inside the shadow algorithm), then tint, illumination and
- * composition tile by tile on a {@link ForkJoinPool}. The result is identical for any thread count and tile size.
+ * pixel per DEM cell: cast shadows first (parallel inside the shadow algorithm), then the sky-view factor when the
+ * scene has sky light ({@link Scene#hasAmbient()}, {@link SkyView}), then tint, illumination and composition tile by
+ * tile on a {@link ForkJoinPool}. The result is identical for any thread count and tile size.
  *
  * <p>To render at a smaller size, resample the DEM first ({@link io.github.jdem846.raster.DemResampler}, or a
  * decimated read): stages then run at the output resolution.
