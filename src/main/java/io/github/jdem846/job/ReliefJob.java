@@ -539,7 +539,9 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
             case HILLSHADE -> scene.withTint(null).withShadows(ShadowAlgorithm.NONE).withAmbient(0);
             case TINT -> scene.withHillshade(null).withShadows(ShadowAlgorithm.NONE).withAmbient(0);
             case SHADOWS -> scene.withTint(null).withHillshade(null).withAmbient(0);
-            case SKY_VIEW -> scene.withTint(null).withHillshade(null).withShadows(ShadowAlgorithm.NONE);
+            // an ambient weight above 0 marks the sky view as a stage (its halo, its memory), whatever it is
+            case SKY_VIEW -> scene.withTint(null).withHillshade(null).withShadows(ShadowAlgorithm.NONE)
+                    .withAmbient(scene.hasAmbient() ? scene.ambient() : 1);
         };
     }
 
