@@ -179,6 +179,16 @@ class SkyViewTest {
     }
 
     @Test
+    void anInterruptStopsTheSweeps() throws InterruptedException {
+        // 64 sweeps of 800 × 600 cells take seconds; the interrupt comes after 100 ms
+        Dem dem = SyntheticDems.rough(800, 600, 30, 3, 900);
+        io.github.jdem846.testing.InterruptedRun run = io.github.jdem846.testing.InterruptedRun.of(
+                () -> SkyView.compute(dem, SkyViewOptions.DEFAULTS.withDirections(64), POOL.get(2)), 100);
+        assertTrue(run.thrown() instanceof java.util.concurrent.CancellationException, "ended by " + run.thrown());
+        assertTrue(run.interruptStatusAtEnd(), "the interrupt status stays set");
+    }
+
+    @Test
     void optionsOutsideTheirRangeAreRefused() {
         assertThrows(IllegalArgumentException.class, () -> SkyViewOptions.DEFAULTS.withDirections(3));
         assertThrows(IllegalArgumentException.class, () -> SkyViewOptions.DEFAULTS.withDirections(361));
