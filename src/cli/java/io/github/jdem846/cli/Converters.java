@@ -220,6 +220,30 @@ final class Converters {
         }
     }
 
+    /** {@code --ambient}: {@link Scene#withAmbient}. */
+    static final class Ambient implements ITypeConverter<Double> {
+        @Override
+        public Double convert(String text) {
+            return checkedDouble(text, Scene.defaults()::withAmbient);
+        }
+    }
+
+    /** {@code --sky-directions}: {@link io.github.jdem846.shadow.SkyViewOptions}. */
+    static final class SkyDirections implements ITypeConverter<Integer> {
+        @Override
+        public Integer convert(String text) {
+            return checkedInt(text, Scene.defaults()::withSkyDirections);
+        }
+    }
+
+    /** {@code --light-model}: {@link io.github.jdem846.render.LightModel}. */
+    static final class LightModelName implements ITypeConverter<io.github.jdem846.render.LightModel> {
+        @Override
+        public io.github.jdem846.render.LightModel convert(String text) {
+            return checked(() -> MethodNames.lightModel(text));
+        }
+    }
+
     /** {@code --refraction}: {@link ShadowOptions}. */
     static final class Refraction implements ITypeConverter<Double> {
         @Override

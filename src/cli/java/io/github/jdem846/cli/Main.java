@@ -33,6 +33,7 @@ public final class Main implements Runnable {
             Map.entry("hillshade", HillshadeCommand::new),
             Map.entry("tint", TintCommand::new),
             Map.entry("shadows", ShadowsCommand::new),
+            Map.entry("skyview", SkyViewCommand::new),
             Map.entry("tiles", TilesCommand::new),
             Map.entry("info", InfoCommand::new),
             Map.entry("sun", SunCommand::new),

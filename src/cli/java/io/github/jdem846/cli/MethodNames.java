@@ -1,5 +1,6 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.render.LightModel;
 import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import java.util.Locale;
@@ -34,6 +35,10 @@ final class MethodNames {
     static ShadowAlgorithm shadows(String name) {
         return named(ShadowAlgorithm.values(), name, "unknown shadow algorithm '" + name
                 + "'; expected one of march, sweep, exact, none");
+    }
+
+    static LightModel lightModel(String name) {
+        return named(LightModel.values(), name, "unknown light model '" + name + "'; expected one of sky, jdem846");
     }
 
     /** The constant of {@code values} whose lower-case name is {@code name} (case-insensitive, trimmed). */

@@ -1,5 +1,6 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.render.LightModel;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shadow.ShadowAlgorithm;
@@ -40,6 +41,24 @@ public final class SceneOptions {
     @Mixin
     ShadowCliOptions shadowOptions;
 
+    @Option(names = "--light-model", paramLabel = "MODEL", defaultValue = "jdem846",
+            converter = Converters.LightModelName.class,
+            description = "How sun, cast shadows and sky light combine: jdem846 (the original's, default: a cast "
+                    + "shadow darkens by a fixed amount) or sky (direct sun × (1 − shadow) + ambient × sky-view "
+                    + "factor: shaded terrain lit by the sky it sees).")
+    LightModel lightModel;
+
+    @Option(names = "--ambient", paramLabel = "0..1", converter = Converters.Ambient.class,
+            description = "Weight of the light of the sky, lighting each cell by the share of the sky it sees "
+                    + "(sky-view factor); 0 computes no sky view. Default: " + LightModel.SKY_AMBIENT
+                    + " with --light-model sky, 0 with jdem846.")
+    Double ambient;
+
+    @Option(names = "--sky-directions", paramLabel = "D", defaultValue = "32",
+            converter = Converters.SkyDirections.class,
+            description = "Azimuths of the sky-view factor's horizons, 4 to 360. Default: ${DEFAULT-VALUE}.")
+    int skyDirections;
+
     /** Says on {@code err} when a shadow option given has no effect with the shadows chosen. */
     void noteUnused(PrintWriter err) {
         shadowOptions.noteUnused(algorithm, err);
@@ -59,6 +78,8 @@ public final class SceneOptions {
     Scene scene() throws IOException {
         return Scene.defaults().withTint(tint.ramp()).withHillshade(method).withHillshadeOptions(shading.options())
                 .withShadows(algorithm).withShadowOptions(shadowOptions.options())
-                .withShadowIntensity(shadowIntensity);
+                .withShadowIntensity(shadowIntensity).withLightModel(lightModel)
+                .withAmbient(ambient != null ? ambient : lightModel == LightModel.SKY ? LightModel.SKY_AMBIENT : 0)
+                .withSkyDirections(skyDirections);
     }
 }

@@ -65,8 +65,19 @@ final class AreaRenderer {
                     scene.hillshadeOptions(), l.field(), area, progress));
             case SHADOWS -> new Pixels(null, maskBytes(renderer.shadows(dem, scene.withLight(l.field()), area,
                     progress)));
+            case SKY_VIEW -> new Pixels(null, skyViewBytes(renderer.skyView(dem, scene, area, progress)));
             case TINT -> throw new AssertionError();
         };
+    }
+
+    /** The sky-view factor 0..1 as 1..255, no-data (NaN) as 0. */
+    static byte[] skyViewBytes(float[] factor) {
+        byte[] bytes = new byte[factor.length];
+        for (int i = 0; i < factor.length; i++) {
+            float f = factor[i];
+            bytes[i] = f == f ? (byte) (1 + Math.round(Clamp.between(f, 0f, 1f) * 254f)) : 0;
+        }
+        return bytes;
     }
 
     /** The shadowed fraction as 0..255. */

@@ -17,8 +17,10 @@ record JobMemory(int perPixel, int outputBytes) {
     /** The needs of {@code product} drawn with {@code scene} (the product's scene: stages it does not draw off). */
     static JobMemory of(Product product, Scene scene) {
         int shadow = !scene.hasShadows() ? 0 : scene.shadowOptions().softShadows() ? 12 : Float.BYTES;
+        int sky = scene.hasAmbient() ? Float.BYTES : 0;
         return switch (product) {
-            case RELIEF -> new JobMemory(Integer.BYTES + shadow, Integer.BYTES);
+            case RELIEF -> new JobMemory(Integer.BYTES + shadow + sky, Integer.BYTES);
+            case SKY_VIEW -> new JobMemory(Byte.BYTES + Float.BYTES, Byte.BYTES);
             case TINT -> new JobMemory(Integer.BYTES, Integer.BYTES);
             case HILLSHADE -> new JobMemory(Byte.BYTES, Byte.BYTES);
             case SHADOWS -> new JobMemory(Byte.BYTES + shadow, Byte.BYTES);

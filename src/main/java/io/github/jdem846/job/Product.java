@@ -9,5 +9,7 @@ public enum Product {
     /** The colour ramp alone, 8-bit RGBA (like {@code gdaldem color-relief -alpha}). */
     TINT,
     /** The cast-shadow mask: 8-bit gray, 0 = lit, 255 = in shadow (soft shadows: the shadowed fraction). */
-    SHADOWS
+    SHADOWS,
+    /** The sky-view factor ({@link io.github.jdem846.shadow.SkyView}): 8-bit gray 1..255 = 0..1, 0 = no-data. */
+    SKY_VIEW
 }

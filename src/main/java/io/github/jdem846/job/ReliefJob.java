@@ -19,6 +19,7 @@ import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.ShadowAlgorithm;
+import io.github.jdem846.shadow.SkyView;
 import io.github.jdem846.shadow.ShadowOptions;
 import io.github.jdem846.sun.Body;
 import io.github.jdem846.sun.SunPosition;
@@ -323,7 +324,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         Objects.requireNonNull(options, "options");
         requireDrawable();
         checkOutput(file, options);
-        WriteOptions o = product == Product.HILLSHADE && options.noData() == null ? options.withNoData(0) : options;
+        WriteOptions o = (product == Product.HILLSHADE || product == Product.SKY_VIEW) && options.noData() == null
+                ? options.withNoData(0) : options;
         return runAndWrite((picture, rgba) -> {
             GeoReference geo = GeoReference.of(picture);
             return rgba ? ImageOutput.openRgba(file, picture.width(), picture.height(), geo, o)
@@ -400,6 +402,9 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         DemLoader.Halo halo = s.hillshade() == null ? DemLoader.Halo.NONE : DemLoader.Halo.uniform(1);
         if (s.hasShadows()) {
             halo = halo.union(shadowHalo(s));
+        }
+        if (s.hasAmbient() || product == Product.SKY_VIEW) {
+            halo = halo.union(DemLoader.Halo.uniform(SkyView.HALO_CELLS));
         }
         DemInfo read = DemReader.inspect(files).withDefaultEllipsoid(body.ellipsoid());
         DemInfo info = read.withGeometry(mercatorScale.apply(read.geometry()));
@@ -494,7 +499,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
 
     /** The product's phase name: "render", "hillshade", "tint" or "shadows". */
     private String stageName() {
-        return product == Product.RELIEF ? "render" : product.name().toLowerCase(Locale.ROOT);
+        return product == Product.RELIEF ? "render" : product == Product.SKY_VIEW ? "skyview"
+                : product.name().toLowerCase(Locale.ROOT);
     }
 
     /**
@@ -539,9 +545,12 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     private Scene productScene() {
         return switch (product) {
             case RELIEF -> scene;
-            case HILLSHADE -> scene.withTint(null).withShadows(ShadowAlgorithm.NONE);
-            case TINT -> scene.withHillshade(null).withShadows(ShadowAlgorithm.NONE);
-            case SHADOWS -> scene.withTint(null).withHillshade(null);
+            case HILLSHADE -> scene.withTint(null).withShadows(ShadowAlgorithm.NONE).withAmbient(0);
+            case TINT -> scene.withHillshade(null).withShadows(ShadowAlgorithm.NONE).withAmbient(0);
+            case SHADOWS -> scene.withTint(null).withHillshade(null).withAmbient(0);
+            // an ambient weight above 0 marks the sky view as a stage (its halo, its memory), whatever it is
+            case SKY_VIEW -> scene.withTint(null).withHillshade(null).withShadows(ShadowAlgorithm.NONE)
+                    .withAmbient(scene.hasAmbient() ? scene.ambient() : 1);
         };
     }
 

@@ -98,7 +98,8 @@ public record ReliefResult(ReliefJob job, DemInfo source, GridGeometry geometry,
         if (argb != null) {
             return ImageOutput.writeRgba(file, argb, width(), height(), geo, options, progress);
         }
-        WriteOptions o = job.product() == Product.HILLSHADE && options.noData() == null ? options.withNoData(0)
+        WriteOptions o = (job.product() == Product.HILLSHADE || job.product() == Product.SKY_VIEW)
+                && options.noData() == null ? options.withNoData(0)
                 : options;
         return ImageOutput.writeGray(file, gray, width(), height(), geo, o, progress);
     }

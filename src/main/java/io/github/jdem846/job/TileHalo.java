@@ -32,6 +32,9 @@ final class TileHalo {
         if (scene.hillshade() != null) {
             java.util.Arrays.fill(h, 1);
         }
+        if (scene.hasAmbient()) {
+            java.util.Arrays.fill(h, Math.max(h[0], io.github.jdem846.shadow.SkyView.HALO_CELLS));
+        }
         if (!scene.hasShadows() || statistics == null || statistics.isEmpty()) {
             return h;
         }

@@ -9,6 +9,7 @@ import io.github.jdem846.shade.IlluminationStage;
 import io.github.jdem846.shadow.CellWindow;
 import io.github.jdem846.shadow.ShadowMask;
 import io.github.jdem846.shadow.ShadowProgress;
+import io.github.jdem846.shadow.SkyView;
 import io.github.jdem846.tint.TintFunction;
 import java.util.List;
 import java.util.Objects;
@@ -20,8 +21,9 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * Renders a {@link Scene} of a {@link Dem} (or of a rectangle of it, the rest serving as halo) into ARGB pixels, one
- * pixel per DEM cell: cast shadows first (parallel inside the shadow algorithm), then tint, illumination and
- * composition tile by tile on a {@link ForkJoinPool}. The result is identical for any thread count and tile size.
+ * pixel per DEM cell: cast shadows first (parallel inside the shadow algorithm), then the sky-view factor when the
+ * scene has sky light ({@link Scene#hasAmbient()}, {@link SkyView}), then tint, illumination and composition tile by
+ * tile on a {@link ForkJoinPool}. The result is identical for any thread count and tile size.
  *
  * <p>To render at another size, resample the DEM first ({@link io.github.jdem846.raster.DemResampler}, or a
  * decimated read): stages then run at the output resolution. An enlarged DEM's coverage ({@link Dem#coverage})
@@ -45,6 +47,8 @@ public final class Renderer {
 
     /** The name prefix of the renderer's worker threads. */
     static final String WORKER_NAME = "jdem846-render-";
+    /** The name of the sky-view stage in progress reports. */
+    public static final String SKY_STAGE = "sky view";
     private static final long TERMINATION_WAIT_SECONDS = 10;
 
     /** Mid-gray, the base colour when a scene has no tint (the original's gray tint, 0.5). */
@@ -94,9 +98,12 @@ public final class Renderer {
         TintFunction tint = scene.tint() == null ? elevation -> Float.isNaN(elevation) ? 0 : PLAIN_GRAY
                 : scene.tint().bind(scene.tintRange() != null ? scene.tintRange() : dem.statistics());
         float[] shadow = castShadows(dem, scene, area, pool, progress);
+        float[] sky = skyView(dem, scene, area, pool, progress);
         IlluminationStage illumination = scene.hillshade() == null ? null
                 : scene.hillshade().stage(scene.hillshadeOptions());
-        Compositor compositor = new Compositor(scene.hillshadeOptions(), scene.shadowIntensity());
+        boolean levelGround = illumination == null && scene.lightModel() == LightModel.SKY;
+        Compositor compositor = new Compositor(scene.hillshadeOptions(), scene.shadowIntensity(),
+                scene.lightModel(), scene.ambient());
         LightField light = scene.light();
         int[] argb = new int[width * height];
         float[] values = dem.backingArray();
@@ -107,13 +114,16 @@ public final class Renderer {
                     float[] dot = new float[w * h];
                     if (illumination != null) {
                         illuminate(dem, illumination, light, area.col() + c0, area.row() + r0, w, h, dot);
+                    } else if (levelGround) {
+                        levelGround(light, area.col() + c0, area.row() + r0, w, h, dot);
                     }
                     for (int r = 0; r < h; r++) {
                         int out = (r0 + r) * width + c0;
                         int in = (area.row() + r0 + r) * demWidth + area.col() + c0;
                         for (int c = 0; c < w; c++) {
                             double s = shadow == null ? 0 : shadow[out + c];
-                            int pixel = compositor.compose(tint.argb(values[in + c]), dot[r * w + c], s,
+                            double v = sky == null ? 1 : sky[out + c];
+                            int pixel = compositor.compose(tint.argb(values[in + c]), dot[r * w + c], s, v,
                                     scene.fade());
                             argb[out + c] = covered ? withCoverage(pixel, dem.coverage(area.col() + c0 + c,
                                     area.row() + r0 + r)) : pixel;
@@ -289,6 +299,52 @@ public final class Renderer {
             stage.illuminate(dem, l, col0, row0 + r, w, 1, row);
             System.arraycopy(row, 0, out, r * w, w);
         }
+    }
+
+    /** The cosine of incidence of level ground, sin(sun elevation), for a scene without a hillshade. */
+    private static void levelGround(LightField light, int col0, int row0, int w, int h, float[] out) {
+        for (int r = 0; r < h; r++) {
+            float up = (float) light.at(col0 + w / 2, row0 + r).up();
+            java.util.Arrays.fill(out, r * w, (r + 1) * w, up);
+        }
+    }
+
+    /**
+     * The sky-view layer alone: the sky-view factor of every cell of {@code area} ({@link SkyView}, with the scene's
+     * directions and z-factor), NaN for no-data; horizons are seen over the whole of {@code dem}.
+     *
+     * @param dem      the terrain
+     * @param scene    supplies the directions and the z-factor
+     * @param area     the cells wanted
+     * @param progress receives the stage "sky view"
+     * @return the factors, row length {@code area.width()}
+     * @throws InterruptedException when the calling thread is interrupted
+     */
+    public float[] skyView(Dem dem, Scene scene, CellWindow area, RenderProgress progress)
+            throws InterruptedException {
+        requireInside(area, dem);
+        try (WorkerPool workers = WorkerPool.of(settings)) {
+            return computeSkyView(dem, scene, area, workers.pool, progress);
+        }
+    }
+
+    /** The sky-view factor of each cell of {@code area}, or {@code null} when the scene has no sky light. */
+    private static float[] skyView(Dem dem, Scene scene, CellWindow area, ForkJoinPool pool, RenderProgress progress)
+            throws InterruptedException {
+        return scene.hasAmbient() ? computeSkyView(dem, scene, area, pool, progress) : null;
+    }
+
+    private static float[] computeSkyView(Dem dem, Scene scene, CellWindow area, ForkJoinPool pool,
+                                          RenderProgress progress) throws InterruptedException {
+        progress.update(SKY_STAGE, 0, 1);
+        float[] f;
+        try {
+            f = SkyView.compute(dem, scene.skyViewOptions(), pool, area);
+        } catch (CancellationException e) {
+            throw TileExecutor.interrupted(e);
+        }
+        progress.update(SKY_STAGE, 1, 1);
+        return f;
     }
 
     /** The shadowed fraction of each cell of {@code area}, or {@code null} when the scene has no cast shadows. */

@@ -7,6 +7,8 @@ import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shade.HillshadeOptions;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowOptions;
+import io.github.jdem846.shadow.SkyView;
+import io.github.jdem846.shadow.SkyViewOptions;
 import io.github.jdem846.tint.ColorRamp;
 import java.util.Objects;
 
@@ -25,10 +27,15 @@ import java.util.Objects;
  * @param fade             extra darkening in [0, 2] for the whole scene, e.g. the twilight fade (0 in daylight)
  * @param tintRange        the elevation range a percent tint is stretched over, or {@code null} for the rendered
  *                         DEM's own range (give the whole file's range when rendering a window or a reduced copy)
+ * @param lightModel       how sun, cast shadows and sky combine ({@link LightModel}; the original's: JDEM846)
+ * @param ambient          the weight W of the light of the sky, 0 to 1; above 0 the sky-view factor of every cell
+ *                         is computed ({@link SkyView}), at 0 it is not
+ * @param skyDirections    the number of azimuths of the sky-view factor ({@link SkyViewOptions#directions()})
  */
 public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions hillshadeOptions,
                     ShadowAlgorithm shadows, ShadowOptions shadowOptions, LightField light,
-                    double shadowIntensity, double fade, ElevationStatistics tintRange) {
+                    double shadowIntensity, double fade, ElevationStatistics tintRange, LightModel lightModel,
+                    double ambient, int skyDirections) {
 
     public Scene {
         Objects.requireNonNull(hillshadeOptions, "hillshadeOptions");
@@ -41,20 +48,25 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
         if (!(fade >= 0 && fade <= 2)) {
             throw new IllegalArgumentException("fade must be between 0 and 2, got " + fade);
         }
+        Objects.requireNonNull(lightModel, "lightModel");
+        if (!(ambient >= 0 && ambient <= 1)) {
+            throw new IllegalArgumentException("ambient (sky light) weight must be between 0 and 1, got " + ambient);
+        }
+        new SkyViewOptions(skyDirections, 1);                 // validates the number of directions
     }
 
     /**
      * The original's defaults: the article's hypsometric tint (table 2; on a DEM holding land and sea, table 2 above
      * 0 m and the original's bathymetric ramp below, {@link ColorRamp#defaultRamp()}), jDem846 hillshade with light
      * multiple 0.75 and intensities 0.75/1.0, no cast shadows, sun at azimuth 320° and elevation 25°, shadow
-     * intensity 0.4.
+     * intensity 0.4, the original's light model without sky light ({@link LightModel#JDEM846}, ambient 0).
      *
      * @return the default scene
      */
     public static Scene defaults() {
         return new Scene(ColorRamp.defaultRamp(), HillshadeMethod.JDEM846, HillshadeOptions.DEFAULTS,
                 ShadowAlgorithm.NONE, ShadowOptions.DEFAULTS, LightField.uniform(LightDirection.ORIGINAL_DEFAULT),
-                Compositor.DEFAULT_SHADOW_INTENSITY, 0, null);
+                Compositor.DEFAULT_SHADOW_INTENSITY, 0, null, LightModel.JDEM846, 0, SkyViewOptions.DEFAULT_DIRECTIONS);
     }
 
     /**
@@ -64,7 +76,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withTint(ColorRamp ramp) {
-        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange);
+        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
     }
 
     /**
@@ -74,7 +86,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withHillshade(HillshadeMethod method) {
-        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange);
+        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
     }
 
     /**
@@ -84,7 +96,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withHillshadeOptions(HillshadeOptions options) {
-        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange);
+        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
     }
 
     /**
@@ -94,7 +106,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadows(ShadowAlgorithm algorithm) {
-        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange);
+        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
     }
 
     /**
@@ -104,7 +116,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadowOptions(ShadowOptions options) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
     }
 
     /**
@@ -124,7 +136,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withLight(LightField field) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
     }
 
     /**
@@ -134,7 +146,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadowIntensity(double intensity) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange, lightModel, ambient, skyDirections);
     }
 
     /**
@@ -145,7 +157,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withFade(double darkening) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity,
-                darkening, tintRange);
+                darkening, tintRange, lightModel, ambient, skyDirections);
     }
 
     /**
@@ -156,7 +168,55 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withTintRange(ElevationStatistics range) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                range);
+                range, lightModel, ambient, skyDirections);
+    }
+
+    /**
+     * The same scene with another light model.
+     *
+     * @param model how sun, cast shadows and sky combine
+     * @return the new scene
+     */
+    public Scene withLightModel(LightModel model) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
+                tintRange, model, ambient, skyDirections);
+    }
+
+    /**
+     * The same scene with another weight of the light of the sky.
+     *
+     * @param weight 0 (no sky light, no sky-view factor computed) to 1
+     * @return the new scene
+     */
+    public Scene withAmbient(double weight) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
+                tintRange, lightModel, weight, skyDirections);
+    }
+
+    /**
+     * The same scene with another number of sky-view azimuths.
+     *
+     * @param directions 4 to 360 ({@link SkyViewOptions})
+     * @return the new scene
+     */
+    public Scene withSkyDirections(int directions) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
+                tintRange, lightModel, ambient, directions);
+    }
+
+    /** @return true when the sky-view factor is to be computed (an ambient weight above 0) */
+    public boolean hasAmbient() {
+        return ambient > 0;
+    }
+
+    /**
+     * The settings of the sky-view stage: the scene's directions, heights exaggerated by the z-factor as the
+     * hillshade shows them.
+     *
+     * @return the sky-view options
+     */
+    public SkyViewOptions skyViewOptions() {
+        return new SkyViewOptions(skyDirections, hillshadeOptions.zFactor());
     }
 
     /**

@@ -57,7 +57,8 @@ final class TileRasterizer {
 
     /** {@link #need(WebMercatorTile)} of any block {@code core} of global pixels. */
     CellWindow need(CellWindow core) {
-        int base = scene.hillshade() != null ? 1 : 0;
+        int base = scene.hasAmbient() ? io.github.jdem846.shadow.SkyView.HALO_CELLS
+                : scene.hillshade() != null ? 1 : 0;
         CellWindow need = grow(core, base);
         if (!scene.hasShadows() || range.isEmpty()) {
             return need;

@@ -10,8 +10,8 @@ import picocli.CommandLine;
 
 class MainTest {
 
-    private static final Set<String> ALL = Set.of("help", "render", "view", "hillshade", "tint", "shadows", "tiles", "info",
-            "sun", "completion");
+    private static final Set<String> ALL = Set.of("help", "render", "view", "hillshade", "tint", "shadows",
+            "skyview", "tiles", "info", "sun", "completion");
 
     @Test
     void aNamedSubcommandBuildsOnlyItsOwnModel() {
