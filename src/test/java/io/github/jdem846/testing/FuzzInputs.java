@@ -14,8 +14,8 @@ import java.util.stream.Stream;
 /**
  * What every fuzz test of a reader checks: the input, written to a file, reads to a value or is refused with the
  * reader's own exception naming the file; anything else (a JDK runtime exception, an error, an allocation far
- * beyond what the input can justify) is a finding. Jazzer reports the exception; the regression run (and
- * {@code FuzzCorpusReplayTest}) fails with it.
+ * beyond what the input can justify) is a finding. Jazzer reports the exception when fuzzing; the regression run
+ * of the normal tests fails with it.
  */
 public final class FuzzInputs {
 

@@ -4,6 +4,7 @@ import com.code_intelligence.jazzer.api.FuzzedDataProvider;
 import com.code_intelligence.jazzer.junit.FuzzTest;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.SampleType;
+import io.github.jdem846.io.source.RasterSource;
 import io.github.jdem846.testing.FuzzInputs;
 import java.io.IOException;
 import java.nio.ByteOrder;
@@ -20,12 +21,29 @@ import java.util.List;
  */
 class GeoTiffFuzzTest {
 
-    /** A GeoTIFF reads to a grid or is refused with a DemFormatException naming it. */
+    /**
+     * A GeoTIFF opens and its cells decode, or it is refused with a DemFormatException naming it. The source is
+     * used directly (two to three times as many executions per second as through {@link DemReader}, whose own
+     * checks {@code FuzzReproducerTest} and {@code ReaderLimitsTest} exercise): at most {@link #MAX_CELLS} cells
+     * are read, the top rows and the bottom rows, so that a huge declared grid still has its blocks decoded.
+     */
     @FuzzTest
     void geoTiff(byte[] data) throws Exception {
         Path tif = FuzzInputs.write("fuzz_geotiff.tif", data);
-        FuzzInputs.readsOrRefuses(tif, data.length, () -> DemReader.read(tif));
+        FuzzInputs.readsOrRefuses(tif, data.length, () -> {
+            try (RasterSource source = GeoTiffSource.open(tif)) {
+                int width = (int) Math.min(source.info().width(), MAX_CELLS);
+                int height = source.info().height();
+                int rows = (int) Math.max(1, Math.min(height, MAX_CELLS / 2 / width));
+                float[] cells = new float[width * rows];
+                source.readRows(0, 0, width, rows, cells);
+                source.readRows(0, height - rows, width, rows, cells);
+            }
+        });
     }
+
+    /** The most cells the geoTiff target reads of one input. */
+    private static final long MAX_CELLS = 1 << 20;
 
     /**
      * A GeoKey directory (its SHORT values, the double and ASCII parameters) parses or is refused with the
@@ -49,8 +67,8 @@ class GeoTiffFuzzTest {
         try {
             reader = GeoKeyReader.parse(dir, doubles, ascii);
         } catch (IllegalArgumentException e) {
-            if (e.getMessage() == null || !e.getMessage().startsWith("the GeoKey directory")) {
-                throw e;
+            if (!e.getStackTrace()[0].getClassName().equals(GeoKeyReader.class.getName())) {
+                throw e; // not the parser's own refusal of a malformed directory
             }
             return;
         }
