@@ -23,7 +23,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 /**
  * The readers' limits, one row per absurd input made from a real testdata file by patching bytes: sizes up to
  * 2³¹−1 and 10⁹ × 10⁹, strip counts, offsets and byte counts past the end of the file, Deflate strips overwritten,
- * cut short or inflating beyond their declared size, NaN, zero, negative and infinite cell sizes and origins,
+ * cut short or inflating beyond their declared size, 2³¹−1 samples per pixel, NaN, zero, negative and infinite cell sizes and origins,
  * headers contradicting the data file's length, a VRT of 2³¹−1 columns, an endless device and a directory. Each is
  * refused by read, inspect and statistics alike (inspect where the header alone is at fault) with a
  * {@link DemFormatException} naming the file and the problem, before anything of the declared size is allocated
@@ -42,6 +42,7 @@ class ReaderLimitsTest {
     private static final int WIDTH = 256;
     private static final int HEIGHT = 257;
     private static final int STRIP_OFFSETS = 273;
+    private static final int SAMPLES_PER_PIXEL = 277;
     private static final int ROWS_PER_STRIP = 278;
     private static final int STRIP_BYTE_COUNTS = 279;
     private static final int PIXEL_SCALE = 33550;
@@ -130,6 +131,8 @@ class ReaderLimitsTest {
                         "its strips reach byte 1000013443 but the file has 144376 bytes"),
                 row("tiff strip offset past the end", Stage.HEADER,
                         tiff("o", (p, n) -> p.set(STRIP_OFFSETS, 3, n + 1000)), "but the file has 144376 bytes"),
+                row("tiff SamplesPerPixel 2^31-1", Stage.HEADER,
+                        tiff("spp", (p, n) -> p.set(SAMPLES_PER_PIXEL, maxInt)), "SamplesPerPixel (tag 277)"),
                 row("tiff fewer strips than rows need", Stage.HEADER,
                         tiff("r", (p, n) -> p.set(ROWS_PER_STRIP, 1))),
                 row("tiff deflate strip inflating beyond its declared size", Stage.DATA,

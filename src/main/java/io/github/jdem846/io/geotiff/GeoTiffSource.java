@@ -41,6 +41,9 @@ import javax.imageio.stream.ImageInputStream;
  */
 public final class GeoTiffSource implements RasterSource {
 
+    /** The largest SamplesPerPixel, a SHORT field (TIFF 6.0). */
+    private static final int MAX_SAMPLES_PER_PIXEL = 0xFFFF;
+
     private final Path file;
     private final ImageInputStream stream;
     private final ImageReader reader;
@@ -84,6 +87,11 @@ public final class GeoTiffSource implements RasterSource {
             List<String> notices = new ArrayList<>();
             SampleType type = GeoTiffTags.sampleType(tif, fields);
             int bands = fields.intValue(TiffFields.SAMPLES_PER_PIXEL, 1);
+            if (bands < 1 || bands > MAX_SAMPLES_PER_PIXEL) {
+                // the decoder sizes arrays by it: 2³¹ − 1 from a corrupt field type ran it out of memory
+                throw new DemFormatException(tif, "SamplesPerPixel (tag 277) is " + bands + "; it must be 1 to "
+                        + MAX_SAMPLES_PER_PIXEL + " (a SHORT; corrupt TIFF?)");
+            }
             if (bands > 1) {
                 notices.add("the file has " + bands + " bands; band 1 is read");
             }
