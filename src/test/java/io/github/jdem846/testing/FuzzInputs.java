@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Comparator;
 import java.util.List;
+import java.util.function.Consumer;
 import java.util.stream.Stream;
 
 /**
@@ -84,25 +85,38 @@ public final class FuzzInputs {
      * @throws Exception what the reader threw, if not a well-formed refusal
      */
     public static void readsOrRefuses(List<Path> files, long inputBytes, Read read) throws Exception {
+        readsOrRefuses(e -> namesOneOf(files, e), inputBytes, read);
+    }
+
+    /**
+     * Like {@link #readsOrRefuses(Path, long, Read)}, with the check of a refusal given.
+     *
+     * @param refusal    checks a refusal, throwing an AssertionError when it is not well-formed
+     * @param inputBytes the size of the fuzzed input
+     * @param read       the read
+     * @throws Exception what the reader threw, if not a well-formed refusal
+     */
+    public static void readsOrRefuses(Consumer<DemFormatException> refusal, long inputBytes, Read read)
+            throws Exception {
         long limit = BASE_ALLOCATION + BYTES_PER_INPUT_BYTE * inputBytes;
-        long allocated = readOnce(files, read);
+        long allocated = readOnce(refusal, read);
         if (allocated > limit) {
             // the first read in a JVM also pays for one-time set-up (class loading, Apache SIS's EPSG tables)
-            allocated = readOnce(files, read);
+            allocated = readOnce(refusal, read);
         }
         if (allocated > limit) {
-            throw new AssertionError("reading " + inputBytes + " bytes of " + files.get(0).getFileName()
-                    + " allocated " + allocated + " bytes, more than " + limit);
+            throw new AssertionError("reading " + inputBytes + " bytes allocated " + allocated
+                    + " bytes, more than " + limit);
         }
     }
 
     /** Runs the read, checks a refusal, and returns the bytes it allocated (-1 where not known). */
-    private static long readOnce(List<Path> files, Read read) throws Exception {
+    private static long readOnce(Consumer<DemFormatException> refusal, Read read) throws Exception {
         long before = allocatedBytes();
         try {
             read.run();
         } catch (DemFormatException e) {
-            namesOneOf(files, e);
+            refusal.accept(e);
         }
         long after = allocatedBytes();
         return before < 0 || after < 0 ? -1 : after - before;
