@@ -1,6 +1,8 @@
 package io.github.jdem846.geo;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Timeout;
 import java.nio.charset.StandardCharsets;
 
 /**
@@ -9,6 +11,8 @@ import java.nio.charset.StandardCharsets;
  * The normal test run replays {@code src/test/resources/io/github/jdem846/geo/CrsResolverFuzzTestInputs/wkt/};
  * {@code -Pfuzz} fuzzes (docs/reliability.md).
  */
+// a hang: more than 10 s for one input (Jazzer passes it to libFuzzer as -timeout when fuzzing)
+@Timeout(value = 10, unit = TimeUnit.SECONDS)
 class CrsResolverFuzzTest {
 
     @FuzzTest

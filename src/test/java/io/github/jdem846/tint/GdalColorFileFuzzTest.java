@@ -1,6 +1,8 @@
 package io.github.jdem846.tint;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Timeout;
 import io.github.jdem846.testing.FuzzInputs;
 import java.nio.file.Path;
 
@@ -10,6 +12,8 @@ import java.nio.file.Path;
  * {@code src/test/resources/io/github/jdem846/tint/GdalColorFileFuzzTestInputs/colorFile/}; {@code -Pfuzz} fuzzes
  * (docs/reliability.md).
  */
+// a hang: more than 10 s for one input (Jazzer passes it to libFuzzer as -timeout when fuzzing)
+@Timeout(value = 10, unit = TimeUnit.SECONDS)
 class GdalColorFileFuzzTest {
 
     @FuzzTest

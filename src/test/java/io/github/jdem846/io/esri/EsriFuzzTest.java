@@ -1,6 +1,8 @@
 package io.github.jdem846.io.esri;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Timeout;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.source.RasterSource;
 import io.github.jdem846.testing.FuzzInputs;
@@ -19,6 +21,8 @@ import java.util.List;
  * test run replays the inputs in {@code src/test/resources/io/github/jdem846/io/esri/EsriFuzzTestInputs/<method>/};
  * {@code -Pfuzz} fuzzes (docs/reliability.md).
  */
+// a hang: more than 10 s for one input (Jazzer passes it to libFuzzer as -timeout when fuzzing)
+@Timeout(value = 10, unit = TimeUnit.SECONDS)
 class EsriFuzzTest {
 
     /**

@@ -2,6 +2,8 @@ package io.github.jdem846.io.geotiff;
 
 import com.code_intelligence.jazzer.api.FuzzedDataProvider;
 import com.code_intelligence.jazzer.junit.FuzzTest;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Timeout;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.SampleType;
 import io.github.jdem846.io.source.RasterSource;
@@ -19,6 +21,8 @@ import java.util.List;
  * {@code src/test/resources/io/github/jdem846/io/geotiff/GeoTiffFuzzTestInputs/<method>/}; {@code -Pfuzz} fuzzes
  * (docs/reliability.md).
  */
+// a hang: more than 10 s for one input (Jazzer passes it to libFuzzer as -timeout when fuzzing)
+@Timeout(value = 10, unit = TimeUnit.SECONDS)
 class GeoTiffFuzzTest {
 
     /**

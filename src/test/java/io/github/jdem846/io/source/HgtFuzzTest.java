@@ -1,6 +1,8 @@
 package io.github.jdem846.io.source;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Timeout;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.testing.FuzzInputs;
 import java.nio.file.Path;
@@ -12,6 +14,8 @@ import java.nio.file.Path;
  * {@code src/test/resources/io/github/jdem846/io/source/HgtFuzzTestInputs/hgt/}; {@code -Pfuzz} fuzzes
  * (docs/reliability.md).
  */
+// a hang: more than 10 s for one input (Jazzer passes it to libFuzzer as -timeout when fuzzing)
+@Timeout(value = 10, unit = TimeUnit.SECONDS)
 class HgtFuzzTest {
 
     @FuzzTest
