@@ -46,12 +46,28 @@ public final class EsriAsciiSource implements RasterSource {
         EsriHeader h = EsriHeader.parse(asc, headerLines);
         List<String> notices = new ArrayList<>();
         EsriGridLayout layout = EsriGridLayout.of(h, false, notices);
+        requireRoomForValues(asc, layout);
         Double noData = h.firstNumber("nodata_value", "nodata").orElse(null);
         CrsInfo crs = SidecarCrs.resolve(asc, layout, notices);
         GridGeometry g = ReaderGeometry.of(asc, "the header's keys", layout.cols(), layout.rows(),
                 layout.originX(), layout.originY(), layout.cellWidth(), layout.cellHeight(), crs, layout.anchor());
         return new EsriAsciiSource(asc, new DemInfo(asc.toString(), DemFormat.ESRI_ASCII, SampleType.TEXT, 1, g,
                 noData, notices));
+    }
+
+    /**
+     * Refuses a header whose ncols × nrows values cannot fit in the file: each value takes at least a character
+     * and a separator, so a file of n bytes holds at most (n + 1) / 2 of them.
+     */
+    private static void requireRoomForValues(Path asc, EsriGridLayout layout) throws IOException {
+        long size = Files.size(asc);
+        long cells = (long) layout.cols() * layout.rows();
+        long room = (size + 1) / 2;
+        if (cells > room) {
+            throw new DemFormatException(asc, "the header promises ncols × nrows = " + layout.cols() + " × "
+                    + layout.rows() + " = " + cells + " values, but its " + size + " bytes hold at most " + room
+                    + " (truncated, or ncols/nrows wrong?)");
+        }
     }
 
     @Override

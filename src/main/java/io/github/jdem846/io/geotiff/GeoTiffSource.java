@@ -41,6 +41,9 @@ import javax.imageio.stream.ImageInputStream;
  */
 public final class GeoTiffSource implements RasterSource {
 
+    /** The largest SamplesPerPixel, a SHORT field (TIFF 6.0). */
+    private static final int MAX_SAMPLES_PER_PIXEL = 0xFFFF;
+
     private final Path file;
     private final ImageInputStream stream;
     private final ImageReader reader;
@@ -84,6 +87,11 @@ public final class GeoTiffSource implements RasterSource {
             List<String> notices = new ArrayList<>();
             SampleType type = GeoTiffTags.sampleType(tif, fields);
             int bands = fields.intValue(TiffFields.SAMPLES_PER_PIXEL, 1);
+            if (bands < 1 || bands > MAX_SAMPLES_PER_PIXEL) {
+                // the decoder sizes arrays by it: 2³¹ − 1 from a corrupt field type ran it out of memory
+                throw new DemFormatException(tif, "SamplesPerPixel (tag 277) is " + bands + "; it must be 1 to "
+                        + MAX_SAMPLES_PER_PIXEL + " (a SHORT; corrupt TIFF?)");
+            }
             if (bands > 1) {
                 notices.add("the file has " + bands + " bands; band 1 is read");
             }
@@ -266,15 +274,17 @@ public final class GeoTiffSource implements RasterSource {
     }
 
     /**
-     * Like {@link #decodeSubset} for uncompressed and LZW blocks: read here with one positional read each, LZW
-     * decompressed by {@link TiffLzw}, turned into samples by {@link PredictorUndo}. TwelveMonkeys reads
-     * uncompressed samples through stream calls and LZW bytes one synchronized call at a time
-     * (docs/performance.md).
+     * Like {@link #decodeSubset} for uncompressed, LZW and Deflate blocks: read here with one positional read each,
+     * LZW decompressed by {@link TiffLzw}, Deflate by {@link TiffDeflate} (which also checks that each stream is
+     * whole), turned into samples by {@link PredictorUndo}. TwelveMonkeys reads uncompressed samples through stream
+     * calls and LZW bytes one synchronized call at a time (docs/performance.md), and reads a Deflate block only
+     * until its rows are full, never reaching the checksum.
      *
      * @return false, with nothing decided, when a block is in the old, bit-reversed LZW (left to TwelveMonkeys)
      */
     private boolean decodeHere(int col, int row, int width, int rows, float[] dst) throws IOException {
         boolean lzw = layout.compression() == 5;
+        boolean deflate = layout.compression() == 8 || layout.compression() == 32946;
         int bw = layout.blockWidth();
         int bh = layout.blockHeight();
         int bytes = layout.bytesPerSample();
@@ -288,7 +298,8 @@ public final class GeoTiffSource implements RasterSource {
                         + " e.g. gdal_translate -co TILED=YES in.tif out.tif");
             }
             int expected = (int) blockBytes;
-            byte[] block = lzw ? new byte[expected] : null; // LZW's output; uncompressed data stay as read
+            // LZW's or Deflate's output; uncompressed data stay as read
+            byte[] block = lzw || deflate ? new byte[expected] : null;
             for (int bx = col / bw * bw; bx < col + width; bx += bw) {
                 int index = by / bh * layout.blocksAcross() + bx / bw;
                 byte[] stored = readBlock(layout.offsets()[index], layout.byteCounts()[index]);
@@ -303,10 +314,19 @@ public final class GeoTiffSource implements RasterSource {
                         throw new DemFormatException(file, "cannot decode rows " + row + "–" + (row + rows - 1)
                                 + " (truncated or corrupt TIFF?): " + e.getMessage(), e);
                     }
+                } else if (deflate) {
+                    try {
+                        TiffDeflate.decode(stored, stored.length, block);
+                    } catch (IOException e) {
+                        throw new DemFormatException(file, "cannot decode " + (layout.tiled() ? "tile " : "strip ")
+                                + index + " (rows " + by + "–" + (by + blockRows - 1) + "; corrupt TIFF?): "
+                                + e.getMessage(), e);
+                    }
+                    got = expected;
                 } else {
                     got = Math.min(stored.length, expected);
                 }
-                byte[] samples = lzw ? block : stored;
+                byte[] samples = lzw || deflate ? block : stored;
                 if (got < expected) {
                     throw new DemFormatException(file, "the data of " + (layout.tiled() ? "tile " : "strip ")
                             + index + " end after " + got + " of " + expected + " bytes (truncated or corrupt"

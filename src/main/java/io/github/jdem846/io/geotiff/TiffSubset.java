@@ -53,12 +53,14 @@ final class TiffSubset {
         }
 
         /**
-         * Whether the blocks are read and decoded here rather than by TwelveMonkeys: uncompressed or LZW
-         * ({@link TiffLzw}) blocks with predictor 1, 2 or 3 (as {@link #predictorUndoneHere}), one sample per pixel
-         * or band 1 of separate planes, samples of 8, 16, 32 or 64 bits.
+         * Whether the blocks are read and decoded here rather than by TwelveMonkeys: uncompressed, LZW
+         * ({@link TiffLzw}) or Deflate ({@link TiffDeflate}) blocks with predictor 1, 2 or 3 (as
+         * {@link #predictorUndoneHere}), one sample per pixel or band 1 of separate planes, samples of 8, 16, 32 or
+         * 64 bits.
          */
         boolean decodedHere() {
-            return (compression == 1 || compression == 5) && oneSample() && samplesUndoable();
+            boolean deflate = compression == 8 || compression == 32946;
+            return (compression == 1 || compression == 5 || deflate) && oneSample() && samplesUndoable();
         }
 
         private boolean oneSample() {
