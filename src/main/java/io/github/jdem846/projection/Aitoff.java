@@ -3,9 +3,9 @@ package io.github.jdem846.projection;
 /**
  * The Aitoff projection, as PROJ's {@code +proj=aitoff} (Snyder 1993, p. 130; Snyder &amp; Voxland 1989, USGS
  * PP 1453, p. 233): with cos α = cos φ cos(λ/2), x = 2 cos φ sin(λ/2) / sinc α, y = sin φ / sinc α
- * (sinc α = sin α / α). It has no closed inverse: {@link NewtonInverse} solves it, starting from the closed inverse
- * of the {@link Hammer} projection, whose map has the same outline scaled. The map is the ellipse
- * (x/π)² + (y/(π/2))² ≤ 1.
+ * (sinc α = sin α / α). It is the equatorial azimuthal equidistant projection of (λ/2, φ) with x doubled, whose
+ * inverse is closed (Snyder 1987, USGS PP 1395, p. 196): with X = x/2, ρ = √(X² + y²) (the angle α),
+ * φ = atan2(y sinc ρ, √((X sinc ρ)² + cos² ρ)), λ = 2 atan2(X sinc ρ, cos ρ). The map is the ellipse (x/π)² + (y/(π/2))² ≤ 1.
  */
 public record Aitoff() implements SphericalFormula {
 
@@ -28,16 +28,19 @@ public record Aitoff() implements SphericalFormula {
             lambdaPhi[1] = Double.NaN;
             return;
         }
-        NewtonInverse.solve(this, x, y, hammerGuess(ex, ey), lambdaPhi);
-    }
-
-    /** The point of the Hammer map with the same place in the outline: a start close to the Aitoff solution. */
-    static double[] hammerGuess(double ex, double ey) {
-        double[] guess = new double[2];
-        double r = Math.hypot(ex, ey);
-        double shrink = r > 0.999 ? 0.999 / r : 1; // keep the start inside, where λ is defined
-        new Hammer().inverse(ex * shrink * 2 * Math.sqrt(2), ey * shrink * Math.sqrt(2), guess);
-        return guess;
+        double halfX = x / 2;
+        double rho = Math.min(Math.PI / 2, Math.hypot(halfX, y));
+        if (rho < 1e-15) {
+            lambdaPhi[0] = 0;
+            lambdaPhi[1] = 0;
+            return;
+        }
+        // sin φ = y sinc ρ, cos φ sin(λ/2) = X sinc ρ, cos φ cos(λ/2) = cos ρ: atan2 keeps the poles accurate
+        double sinc = Math.sin(rho) / rho;
+        double east = halfX * sinc;
+        double cosRho = Math.cos(rho);
+        lambdaPhi[1] = Math.atan2(y * sinc, Math.hypot(east, cosRho));
+        lambdaPhi[0] = 2 * Math.atan2(east, cosRho);
     }
 
     @Override

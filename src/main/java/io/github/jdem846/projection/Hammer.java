@@ -4,7 +4,8 @@ package io.github.jdem846.projection;
  * The Hammer (Hammer–Aitoff) equal-area projection, as PROJ's {@code +proj=hammer} (Snyder 1993, p. 130;
  * Snyder &amp; Voxland 1989, USGS PP 1453, p. 233):
  * x = 2√2 cos φ sin(λ/2) / √(1 + cos φ cos(λ/2)), y = √2 sin φ / √(1 + cos φ cos(λ/2)); inverse in closed
- * form: z = √(1 − (x/4)² − (y/2)²), λ = 2 atan2(z x, 2(2z² − 1)), φ = asin(z y). The map is the ellipse
+ * form: z = √(1 − (x/4)² − (y/2)²), λ = 2 atan2(z x, 2(2z² − 1)), φ = asin(z y)
+ * (computed as atan2 for accuracy at the poles). The map is the ellipse
  * x²/8 + y²/2 ≤ 1.
  */
 public record Hammer() implements SphericalFormula {
@@ -26,8 +27,11 @@ public record Hammer() implements SphericalFormula {
             return;
         }
         double z = Math.sqrt(Math.max(zz, 0.5));
-        lambdaPhi[0] = 2 * Math.atan2(z * x, 2 * (2 * z * z - 1));
-        lambdaPhi[1] = Math.asin(Math.max(-1, Math.min(1, z * y)));
+        // cos φ sin(λ/2) = z x / 2, cos φ cos(λ/2) = 2z² − 1, sin φ = z y: atan2 keeps the poles accurate
+        double east = z * x / 2;
+        double c = Math.max(0, 1 - x * x / 8 - y * y / 2); // 2z² − 1 without the rounding of z
+        lambdaPhi[0] = 2 * Math.atan2(east, c);
+        lambdaPhi[1] = Math.atan2(z * y, Math.hypot(east, c));
     }
 
     @Override

@@ -4,7 +4,8 @@ package io.github.jdem846.projection;
  * The Winkel Tripel projection, as PROJ's {@code +proj=wintri} (Snyder 1993, p. 231): the mean of the {@link
  * Aitoff} projection and the equirectangular projection with standard parallel φ₁,
  * x = (λ cos φ₁ + x_Aitoff) / 2, y = (φ + y_Aitoff) / 2. Winkel's own φ₁ = arccos(2/π) ≈ 50.4598° is the default
- * (ESRI's "World_Winkel_Tripel_NGS" uses 50.467°). It has no closed inverse: {@link NewtonInverse} solves it.
+ * (ESRI's "World_Winkel_Tripel_NGS" uses 50.467°). It has no closed inverse: {@link NewtonInverse} solves it, from
+ * the {@link Aitoff} point at the same place in the outline.
  *
  * @param standardParallel φ₁ in degrees, in [0, 90)
  */
@@ -43,7 +44,10 @@ public record WinkelTripel(double standardParallel) implements SphericalFormula 
             lambdaPhi[1] = Double.NaN;
             return;
         }
-        NewtonInverse.solve(this, x, y, Aitoff.hammerGuess(ex, ey), lambdaPhi);
+        // start: the Aitoff point at the same place in the outline (both maps span ±π/2 in y)
+        double[] guess = new double[2];
+        new Aitoff().inverse(ex * Math.PI, ey * Math.PI / 2 * Math.sqrt(Math.max(0, 1 - ex * ex)), guess);
+        NewtonInverse.solve(this, x, y, guess, lambdaPhi);
     }
 
     @Override
