@@ -28,8 +28,9 @@ public record ProjectedExtent(double west, double south, double east, double nor
 
     /**
      * The projected bounding box of a grid's area: its outer edge sampled every 1/{@value #EDGE_SAMPLES} of a side
-     * and {@value #INSIDE_SAMPLES}² points inside, each projected; points off the projection's map are left out,
-     * latitudes beyond its limit cut (Mercator).
+     * and {@value #INSIDE_SAMPLES}² points inside, each projected (and where a longitude/latitude grid crosses the
+     * meridian opposite the central one, that meridian on both sides of the map); points off the projection's map
+     * are left out, latitudes beyond its limit cut (Mercator).
      *
      * @param grid       the grid (its CRS must be known)
      * @param projection the projection
@@ -43,7 +44,8 @@ public record ProjectedExtent(double west, double south, double east, double nor
     static ProjectedExtent of(GridGeometry grid, GridMapping mapping, MapProjection projection) {
         int n = EDGE_SAMPLES;
         int m = INSIDE_SAMPLES;
-        double[] xy = new double[2 * (4 * (n + 1) + m * m)];
+        double[] seams = seamsInside(grid, projection);
+        double[] xy = new double[2 * (4 * (n + 1) + m * m + 2 * seams.length * (n + 1))];
         int k = 0;
         double w = grid.originX();
         double e = grid.eastX();
@@ -61,6 +63,14 @@ public record ProjectedExtent(double west, double south, double east, double nor
         for (int i = 0; i < m; i++) {
             for (int j = 0; j < m; j++) {
                 k = put(xy, k, w + (i + 0.5) / m * (e - w), south + (j + 0.5) / m * (north - south));
+            }
+        }
+        for (double seam : seams) {
+            // the meridian opposite the central one, inside the grid: both of the map's side edges
+            for (int i = 0; i <= n; i++) {
+                double y = south + (double) i / n * (north - south);
+                k = put(xy, k, projection.centralMeridian() - 180, y);
+                k = put(xy, k, projection.centralMeridian() + 180, y);
             }
         }
         mapping.toTarget(xy, k);
@@ -82,6 +92,22 @@ public record ProjectedExtent(double west, double south, double east, double nor
             throw new IllegalArgumentException("the DEM does not lie on the map of " + projection.label());
         }
         return new ProjectedExtent(minX, minY, maxX, maxY);
+    }
+
+    /** The longitudes λ₀ ± 180° + 360° k strictly inside a longitude/latitude grid (none for other grids). */
+    private static double[] seamsInside(GridGeometry grid, MapProjection projection) {
+        if (!grid.crs().isGeographic()) {
+            return new double[0];
+        }
+        double first = projection.centralMeridian() + 180;
+        first -= 360 * Math.ceil((first - grid.originX()) / 360);
+        java.util.List<Double> seams = new java.util.ArrayList<>();
+        for (double s = first; s < grid.eastX(); s += 360) {
+            if (s > grid.originX()) {
+                seams.add(s);
+            }
+        }
+        return seams.stream().mapToDouble(Double::doubleValue).toArray();
     }
 
     private static int put(double[] xy, int k, double x, double y) {
