@@ -7,6 +7,7 @@ import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.projection.MapProjection;
+import io.github.jdem846.projection.ProjectedExtent;
 import io.github.jdem846.projection.ProjectedRender;
 import io.github.jdem846.raster.GridRequestException;
 import io.github.jdem846.render.OutputSize;
@@ -57,6 +58,11 @@ final class ProjectedJobRunner {
         DemInfo info = DemReader.inspect(command.input());
         Optional<LatLonBox> area = info.geometry().latLonExtent();
         MapProjection map = projection.projection(spec, area);
+        try {
+            ProjectedExtent.of(info.geometry(), map); // the DEM's CRS and its place on the map, before rendering
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(info.source() + ": " + e.getMessage(), e);
+        }
         int width = input.width != null ? input.width : 0;
         int height = input.height != null ? input.height : 0;
         int cols = info.geometry().width();

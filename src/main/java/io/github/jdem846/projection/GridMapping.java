@@ -47,7 +47,7 @@ final class GridMapping {
             throw new IllegalArgumentException("the DEM's CRS is "
                     + (crs.kind() == CrsInfo.Kind.UNKNOWN && crs.name() == null ? "not known"
                     : "'" + (crs.name() != null ? crs.name() : "EPSG:" + crs.epsg()) + "', which Apache SIS cannot "
-                    + "build offline") + ", so the picture cannot be projected; give the DEM a .prj");
+                    + "build offline") + ", so the picture cannot be projected (a CRS given as WKT, e.g. in a .prj, can)");
         }
         try {
             MathTransform toTarget = CRS.findOperation(sourceCrs, projection.crs(), null).getMathTransform();

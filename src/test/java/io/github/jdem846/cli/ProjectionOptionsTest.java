@@ -62,7 +62,17 @@ class ProjectionOptionsTest {
         CliRun meridian = CliRun.of("render", LUXEMBOURG, "--central-meridian", "10", "-o", out, "-q");
         assertEquals(2, meridian.exitCode(), meridian.err());
         assertTrue(meridian.err().contains("--central-meridian needs --projection"), meridian.err());
-        for (CliRun r : new CliRun[] {unknown, offline, meridian}) {
+        // EPSG:2193 is not known to Apache SIS offline: one line naming the file; the same grid with its .prj works
+        String volcano = "testdata/dem/maungawhau-volcano_10m_nztm-approx";
+        CliRun nztm = CliRun.of("render", volcano + ".tif", "--projection", "robinson", "-o", out, "-q");
+        assertEquals(1, nztm.exitCode(), nztm.err());
+        assertTrue(nztm.err().startsWith("jdem846: " + volcano + ".tif: ") && nztm.err().contains("WKT"),
+                nztm.err());
+        assertEquals(1, nztm.err().strip().lines().count(), nztm.err());
+        CliRun withPrj = CliRun.of("render", volcano + ".flt", "--projection", "robinson", "-o",
+                dir.resolve("v.png").toString(), "-q");
+        assertEquals(0, withPrj.exitCode(), withPrj.err());
+        for (CliRun r : new CliRun[] {unknown, offline, meridian, nztm}) {
             assertFalse(r.err().contains("\tat "), r.err());
         }
         assertFalse(Files.exists(dir.resolve("x.png")));
