@@ -99,5 +99,22 @@ final class FormulaTransform extends AbstractMathTransform2D {
             dst[dstOff + 1] = Math.toDegrees(lp[1]);
             return null;
         }
+
+        /** Each point's solution is the next one's first start: neighbouring pixels converge in a step or two. */
+        @Override
+        public void transform(double[] src, int srcOff, double[] dst, int dstOff, int numPts) {
+            double[] in = java.util.Arrays.copyOfRange(src, srcOff, srcOff + 2 * numPts);
+            double[] hint = {Double.NaN, Double.NaN};
+            double[] lp = new double[2];
+            for (int i = 0; i < numPts; i++) {
+                formula.inverse(in[2 * i] / radius, in[2 * i + 1] / radius, hint, lp);
+                dst[dstOff + 2 * i] = Math.toDegrees(lp[0]) + centralMeridian;
+                dst[dstOff + 2 * i + 1] = Math.toDegrees(lp[1]);
+                if (!Double.isNaN(lp[0])) {
+                    hint[0] = lp[0];
+                    hint[1] = lp[1];
+                }
+            }
+        }
     }
 }

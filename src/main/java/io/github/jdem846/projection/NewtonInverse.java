@@ -2,7 +2,7 @@ package io.github.jdem846.projection;
 
 /**
  * Inverts a {@link SphericalFormula} without a closed inverse by Newton's method on (λ, φ), with the Jacobian
- * taken by central differences. Each step is limited (at most 0.5 rad) and kept on the sphere (|λ| ≤ π,
+ * taken by forward differences (towards the equator). Each step is limited (at most 0.5 rad) and kept on the sphere (|λ| ≤ π,
  * |φ| ≤ π/2); a point whose forward projection does not come back within {@link #TOLERANCE} of (x, y) from the
  * given start or from a few others lies outside the map and gives NaN.
  */
@@ -27,7 +27,18 @@ final class NewtonInverse {
      * @param lambdaPhi receives λ and φ, or NaN, NaN when no start converges
      */
     static void solve(SphericalFormula formula, double x, double y, double[] guess, double[] lambdaPhi) {
-        double[][] starts = {guess, {x, y / 2}, {x / 2, y}, {0, y}};
+        solve(formula, x, y, null, guess, lambdaPhi);
+    }
+
+    /**
+     * Solves forward(λ, φ) = (x, y), trying {@code hint} (e.g. the solution of the neighbouring point) first.
+     *
+     * @param hint the first start, or null
+     */
+    static void solve(SphericalFormula formula, double x, double y, double[] hint, double[] guess,
+                      double[] lambdaPhi) {
+        double[] none = {Double.NaN, Double.NaN};
+        double[][] starts = {hint != null ? hint : none, guess, {x, y / 2}, {x / 2, y}, {0, y}};
         for (double[] start : starts) {
             if (Double.isFinite(start[0]) && Double.isFinite(start[1])
                     && iterate(formula, x, y, start[0], start[1], lambdaPhi)) {
@@ -53,13 +64,11 @@ final class NewtonInverse {
                 break;
             }
             formula.forward(lambda + H, phi, a);
-            formula.forward(lambda - H, phi, b);
-            double dxdl = (a[0] - b[0]) / (2 * H);
-            double dydl = (a[1] - b[1]) / (2 * H);
-            formula.forward(lambda, phi + H, a);
-            formula.forward(lambda, phi - H, b);
-            double dxdp = (a[0] - b[0]) / (2 * H);
-            double dydp = (a[1] - b[1]) / (2 * H);
+            double dxdl = (a[0] - f[0]) / H;
+            double dydl = (a[1] - f[1]) / H;
+            formula.forward(lambda, phi + (phi > 0 ? -H : H), b);
+            double dxdp = (b[0] - f[0]) / (phi > 0 ? -H : H);
+            double dydp = (b[1] - f[1]) / (phi > 0 ? -H : H);
             double det = dxdl * dydp - dxdp * dydl;
             if (det == 0 || !Double.isFinite(det)) {
                 break;

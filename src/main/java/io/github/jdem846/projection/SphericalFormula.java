@@ -26,6 +26,19 @@ public sealed interface SphericalFormula permits Aitoff, Hammer, WinkelTripel, W
      */
     void inverse(double x, double y, double[] lambdaPhi);
 
+    /**
+     * Finds the point that projects to {@code (x, y)}, given a point likely near it (an iterative inverse starts
+     * there); the same as {@link #inverse(double, double, double[])} for a closed inverse.
+     *
+     * @param x         x on the unit sphere
+     * @param y         y on the unit sphere
+     * @param hint      λ and φ in radians of a nearby solution, or NaN
+     * @param lambdaPhi receives λ and φ in radians, or NaN, NaN when {@code (x, y)} lies outside the map
+     */
+    default void inverse(double x, double y, double[] hint, double[] lambdaPhi) {
+        inverse(x, y, lambdaPhi);
+    }
+
     /** @return the projection's name as ESRI and GDAL write it in WKT 1 ({@code PROJECTION["…"]}) */
     String wktName();
 }

@@ -35,6 +35,11 @@ public record WinkelTripel(double standardParallel) implements SphericalFormula 
 
     @Override
     public void inverse(double x, double y, double[] lambdaPhi) {
+        inverse(x, y, null, lambdaPhi);
+    }
+
+    @Override
+    public void inverse(double x, double y, double[] hint, double[] lambdaPhi) {
         double cosPhi1 = Math.cos(Math.toRadians(standardParallel));
         double halfWidth = (Math.PI * cosPhi1 + Math.PI) / 2; // x of (±π, 0)
         double ex = x / halfWidth;
@@ -47,7 +52,7 @@ public record WinkelTripel(double standardParallel) implements SphericalFormula 
         // start: the Aitoff point at the same place in the outline (both maps span ±π/2 in y)
         double[] guess = new double[2];
         new Aitoff().inverse(ex * Math.PI, ey * Math.PI / 2 * Math.sqrt(Math.max(0, 1 - ex * ex)), guess);
-        NewtonInverse.solve(this, x, y, guess, lambdaPhi);
+        NewtonInverse.solve(this, x, y, hint, guess, lambdaPhi);
     }
 
     @Override
