@@ -17,6 +17,7 @@ module io.github.jdem846 {
     exports io.github.jdem846.job;
     exports io.github.jdem846.light;
     exports io.github.jdem846.output;
+    exports io.github.jdem846.projection;
     exports io.github.jdem846.raster;
     exports io.github.jdem846.render;
     exports io.github.jdem846.shade;
