@@ -72,7 +72,7 @@ final class ProjectedJobRunner {
         ReliefJob job = command.withSize(shading).withMemory(execution.memory());
         job.requireDrawable();
         PhaseTimes times = new PhaseTimes();
-        try (ConsoleProgress progress = ConsoleProgress.create(output.quiet)) {
+        try (ConsoleProgress progress = ConsoleProgress.create(output.quiet, output.progress, err)) {
             new ProjectedRender(map, width, height).runAndWrite(job, output.path(), options,
                     new ConsoleJobListener(progress, err, times, sunTime, () -> { }));
         } catch (GridRequestException e) {
