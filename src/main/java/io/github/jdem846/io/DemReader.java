@@ -209,10 +209,12 @@ public final class DemReader {
     private static ElevationStatistics readParts(DemInput input, RasterSource first, Window.Cells cells, int d,
                                                  int parts, int rowsPerPart, PartReader reader)
             throws IOException {
+        java.util.List<Thread> threads = new java.util.concurrent.CopyOnWriteArrayList<>();
         java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(parts - 1,
                 r -> {
                     Thread t = new Thread(r, "jdem846-read");
                     t.setDaemon(true);
+                    threads.add(t);
                     return t;
                 });
         try {
@@ -250,6 +252,27 @@ public final class DemReader {
             throw new IllegalStateException(cause);
         } finally {
             pool.shutdownNow();
+            joinQuietly(threads);
+        }
+    }
+
+    /**
+     * Waits until the reading threads have ended (the pool's shutdown interrupts them, which stops their channel
+     * reads at once), so that no thread of a read outlives the call; keeps the caller's interrupt status.
+     */
+    private static void joinQuietly(java.util.List<Thread> threads) {
+        boolean interrupted = false;
+        for (Thread t : threads) {
+            while (t.isAlive()) {
+                try {
+                    t.join();
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
         }
     }
 
