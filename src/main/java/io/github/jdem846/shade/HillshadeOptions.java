@@ -38,7 +38,22 @@ public record HillshadeOptions(double zFactor, double lightMultiple, double rela
      */
     public static final HillshadeOptions DEFAULTS = new HillshadeOptions(1.0, 0.75, 0.75, 1.0, 1.0, Double.NaN);
 
-    /** Validates every field, naming what is wrong and what would be right. */
+    /**
+     * Validates every field, naming what is wrong and what would be right.
+     *
+     * @param zFactor vertical exaggeration: heights are multiplied by it before any normal or gradient is computed
+     *     (gdaldem {@code -z}); positive, at most 1e6
+     * @param lightMultiple the original's {@code lightingMultiple}: a second height factor used only for the jDem846
+     *     normals (0.75 flattens them a little); 0 to 1e6
+     * @param relativeLightIntensity factor for a positive illumination (the original's {@code relativeLightIntensity},
+     *     0.75); 0 to 1
+     * @param relativeDarkIntensity factor for a negative illumination ({@code relativeDarkIntensity}, 1.0); 0 to 1
+     * @param spotExponent sign-preserving exponent, sign(d)·|d|^spot ({@code spotExponent}, 1); 0.01 to 128
+     * @param horizontalScale NaN (the default): horizontal cell sizes are the metric sizes of the DEM's geometry, per
+     *     row ({@code cellWidthMeters(row)}, {@code cellHeightMeters(row)}). A positive number s: the cell sizes are
+     *     the grid's cell size in CRS units times s, exactly as gdaldem's {@code -s s} (e.g. 111120 for degrees →
+     *     metres at every latitude)
+     */
     public HillshadeOptions {
         if (!(zFactor > 0 && zFactor <= MAX_HEIGHT_FACTOR)) {
             throw new IllegalArgumentException("z-factor must be a number > 0 and ≤ " + MAX_HEIGHT_FACTOR
