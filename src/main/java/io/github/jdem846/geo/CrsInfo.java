@@ -43,6 +43,20 @@ public record CrsInfo(String name, Integer epsg, Kind kind, double linearUnitMet
      */
     public static final CrsInfo WGS84 = geographic("WGS 84", 4326, Ellipsoid.WGS84);
 
+    /**
+     * Checks that the kind is given and that a projected CRS has a positive linear unit.
+     *
+     * @param name a human-readable name, or {@code null} when unknown
+     * @param epsg the EPSG code, or {@code null}
+     * @param kind geographic (axes in degrees), projected (axes in a linear unit) or unknown
+     * @param linearUnitMeters metres per axis unit for projected CRSs (1, 0.3048, 1200/3937); NaN otherwise
+     * @param ellipsoid the ellipsoid, or {@code null} when unknown (geographic grids then use WGS 84)
+     * @param sisCrs the Apache SIS CRS, or {@code null} when it could not be resolved or was not needed (a GeoTIFF's
+     *     lat/lon CRS read from its GeoKeys alone, a UTM zone known by its EPSG code ({@link UtmZone}), an implied WGS
+     *     84: {@link CrsResolver#complete} resolves it from the EPSG code)
+     * @param assumed true when nothing in the file named the CRS and it was inferred (e.g. degrees from the extent);
+     *     the CLI reports this
+     */
     public CrsInfo {
         Objects.requireNonNull(kind, "kind");
         if (kind == Kind.PROJECTED && !(linearUnitMeters > 0)) {

@@ -19,6 +19,13 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
     /** Mars as a sphere of IAU mean radius 3389.5 km. */
     public static final Ellipsoid MARS = sphere("Mars", 3389500.0);
 
+    /**
+     * Checks the axis and the flattening; an inverse flattening of 0 is taken as infinite (a sphere).
+     *
+     * @param name a human-readable name, e.g. "WGS 84"
+     * @param semiMajorAxis equatorial radius a, in metres; positive and finite
+     * @param inverseFlattening 1/f; {@code Double.POSITIVE_INFINITY} (or 0, as EPSG writes it) for a sphere
+     */
     public Ellipsoid {
         if (!(semiMajorAxis > 0) || Double.isInfinite(semiMajorAxis)) {
             throw new IllegalArgumentException("semi-major axis must be positive and finite: " + semiMajorAxis);

@@ -13,6 +13,11 @@ import java.util.Objects;
  */
 public record DemInput(List<Path> files) {
 
+    /**
+     * Copies the list of files and checks that it holds at least one.
+     *
+     * @param files the DEM files, at least one; a {@code .hdr} stands for its data file
+     */
     public DemInput {
         files = List.copyOf(Objects.requireNonNull(files, "files"));
         if (files.isEmpty()) {

@@ -18,6 +18,12 @@ public record LightDirection(double azimuthDegrees, double elevationDegrees) {
     /** The original jDem846's default light: azimuth 320°, elevation 25°. */
     public static final LightDirection ORIGINAL_DEFAULT = new LightDirection(320, 25);
 
+    /**
+     * Checks the ranges and brings the azimuth into [0, 360).
+     *
+     * @param azimuthDegrees clockwise from north, normalised into [0, 360)
+     * @param elevationDegrees above the horizon, in [−90, 90]
+     */
     public LightDirection {
         if (!Double.isFinite(azimuthDegrees)) {
             throw new IllegalArgumentException("sun azimuth must be a finite number of degrees, got "

@@ -18,6 +18,15 @@ import java.util.Objects;
  */
 public record GeoReference(double westX, double northY, double eastX, double southY, CrsInfo crs) {
 
+    /**
+     * Checks that the CRS is given and that the edges are finite with east &gt; west and north &gt; south.
+     *
+     * @param westX x of the west edge of the first column
+     * @param northY y of the north edge of the first row
+     * @param eastX x of the east edge of the last column; greater than {@code westX}
+     * @param southY y of the south edge of the last row; less than {@code northY}
+     * @param crs the CRS ({@link CrsInfo#UNKNOWN} when unknown)
+     */
     public GeoReference {
         Objects.requireNonNull(crs, "crs");
         if (!Double.isFinite(westX) || !Double.isFinite(northY) || !Double.isFinite(eastX)

@@ -69,6 +69,27 @@ public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, D
         COG
     }
 
+    /**
+     * Checks that the enumerations are given and the compression level, COG tile size and JPEG quality are in range.
+     *
+     * @param sidecars when to write a world file, a {@code .prj} and a GDAL {@code .aux.xml} next to the image; by
+     *     default never (a GeoTIFF embeds its georeferencing), as the CLI without {@code --world-file}
+     * @param worldFileNaming {@code .pgw}/{@code .tfw} or the generic {@code .wld}
+     * @param noData the value marked as no-data in a GeoTIFF (GDAL_NODATA tag), or {@code null} for none; for 8-bit
+     *     products an integer 0..255 (0 for hillshades), for float32 any value or NaN. PNG has no no-data marker: RGBA
+     *     no-data pixels are transparent (alpha 0)
+     * @param pngCompressionLevel deflate level 0 (none) to 9 (smallest) for PNG; the default 1 is the fastest level and
+     *     within 10 % of the smallest file (see docs/performance.md)
+     * @param parallelCompression compress on all processors: PNG row segments, GeoTIFF strips and COG tiles in the
+     *     common ForkJoinPool (the file is the same either way)
+     * @param tiffLayout how a GeoTIFF is laid out: {@link TiffLayout#STRIPS} (the default) or a Cloud-Optimized GeoTIFF
+     *     ({@link TiffLayout#COG}, GeoTIFF files only)
+     * @param cogTileSize the tile edge of a COG in pixels, a multiple of 16 from 16 to 4096 (default 512)
+     * @param jpegQuality JPEG quality 1 (smallest) to 100 (best), default 90
+     * @param background non-premultiplied 0xAARRGGBB colour an RGBA picture is laid on before writing (no-data and
+     *     partly transparent pixels take it; an opaque colour gives an opaque picture), or {@code null} to keep
+     *     transparency; a JPEG, which has none, uses white when null
+     */
     public WriteOptions {
         Objects.requireNonNull(sidecars, "sidecars");
         Objects.requireNonNull(worldFileNaming, "worldFileNaming");

@@ -22,6 +22,16 @@ import java.util.Objects;
 public record ProjectedPicture(MapProjection projection, ProjectedExtent extent, int width, int height,
                                int[] argb) {
 
+    /**
+     * Checks that projection and extent are given and that there are {@code width × height} pixels.
+     *
+     * @param projection the projection
+     * @param extent the area it covers, in the projection's units
+     * @param width pixels across
+     * @param height pixels down
+     * @param argb non-premultiplied 0xAARRGGBB pixels, row 0 north, transparent off the map and outside the DEM. Owned
+     *     by this record: do not modify
+     */
     public ProjectedPicture {
         Objects.requireNonNull(projection, "projection");
         Objects.requireNonNull(extent, "extent");

@@ -13,6 +13,12 @@ public record EncodedTile(WebMercatorTile tile, byte[] png) implements Serializa
 
     private static final long serialVersionUID = 1L;
 
+    /**
+     * Checks that the tile and its bytes are given.
+     *
+     * @param tile where it goes
+     * @param png the whole PNG file (the array is shared, not copied)
+     */
     public EncodedTile {
         Objects.requireNonNull(tile, "tile");
         Objects.requireNonNull(png, "png");

@@ -19,6 +19,15 @@ public record TileGroup(int z, int minX, int minY, int maxX, int maxY) implement
 
     private static final long serialVersionUID = 1L;
 
+    /**
+     * Checks that the tiles exist at zoom {@code z}.
+     *
+     * @param z zoom
+     * @param minX first column
+     * @param minY first row (north)
+     * @param maxX last column (inclusive)
+     * @param maxY last row (inclusive)
+     */
     public TileGroup {
         new TileRange(z, minX, minY, maxX, maxY); // checks the bounds
     }

@@ -51,6 +51,18 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
     /** Deflate level of the tiles by default: zlib's default, a good size for serving. */
     public static final int DEFAULT_PNG_COMPRESSION = 6;
 
+    /**
+     * Checks that the parts are given and that the PNG compression level is 0 to 9.
+     *
+     * @param input the DEM file, or files read as one grid
+     * @param zooms the zoom levels
+     * @param scene the stages and their settings (its light, tint range and fade are set from {@code sun} and the DEM)
+     * @param sun the light: fixed, or the sun at a date and time seen from the DEM's centre (or {@link Sun#place()}),
+     *     the same for every tile; a sun per tile is not allowed
+     * @param execution tiles rendered at once ({@link RenderSettings#parallelism()}) and the renderer's tile size; with
+     *     a shared pool ({@link RenderSettings#withPool}) every tile renders on it. The tiles do not depend on them
+     * @param pngCompression deflate level of the tiles, 0 to 9
+     */
     public TileJob {
         Objects.requireNonNull(input, "input");
         Objects.requireNonNull(zooms, "zooms");

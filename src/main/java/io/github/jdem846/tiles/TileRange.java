@@ -15,6 +15,15 @@ import java.util.List;
  */
 public record TileRange(int z, int minX, int minY, int maxX, int maxY) {
 
+    /**
+     * Checks that the range is not empty and its tiles exist at zoom {@code z}.
+     *
+     * @param z zoom
+     * @param minX first column
+     * @param minY first row (north)
+     * @param maxX last column
+     * @param maxY last row (south)
+     */
     public TileRange {
         int n = 1 << z;
         if (minX < 0 || minY < 0 || maxX >= n || maxY >= n || minX > maxX || minY > maxY) {

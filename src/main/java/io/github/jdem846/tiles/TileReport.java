@@ -29,6 +29,14 @@ public record TileReport(Path output, TileFormat format, List<Zoom> zooms, long 
         }
     }
 
+    /**
+     * Copies the list of zooms.
+     *
+     * @param output the directory or archive
+     * @param format how the tiles were stored
+     * @param zooms per zoom level, in order: the tiles considered and the tiles written
+     * @param bytes the PNG bytes of all tiles written (before deduplication in an archive)
+     */
     public TileReport {
         zooms = List.copyOf(zooms);
     }

@@ -23,6 +23,13 @@ public record WebMercatorTile(int z, int x, int y) implements java.io.Serializab
     /** Deepest zoom: its world, 256·2^22 pixels wide, still fits an int (a 9.3 mm pixel at the equator). */
     public static final int MAX_ZOOM = 22;
 
+    /**
+     * Checks that the zoom is 0 to {@link #MAX_ZOOM} and the tile exists at that zoom.
+     *
+     * @param z zoom, 0 to {@link #MAX_ZOOM}
+     * @param x column, 0 to 2^z − 1
+     * @param y row, 0 to 2^z − 1
+     */
     public WebMercatorTile {
         if (z < 0 || z > MAX_ZOOM) {
             throw new IllegalArgumentException("zoom must be 0 to " + MAX_ZOOM + ", got " + z);

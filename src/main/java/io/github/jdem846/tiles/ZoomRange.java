@@ -8,6 +8,12 @@ package io.github.jdem846.tiles;
  */
 public record ZoomRange(int min, int max) {
 
+    /**
+     * Checks that 0 ≤ min ≤ max ≤ {@link WebMercatorTile#MAX_ZOOM}.
+     *
+     * @param min the first zoom, 0 to {@link WebMercatorTile#MAX_ZOOM}
+     * @param max the last zoom, {@code min} to {@link WebMercatorTile#MAX_ZOOM}
+     */
     public ZoomRange {
         if (min < 0 || max > WebMercatorTile.MAX_ZOOM || min > max) {
             throw new IllegalArgumentException("zoom levels must be 0 to " + WebMercatorTile.MAX_ZOOM

@@ -13,6 +13,14 @@ import java.util.Objects;
  */
 public record ColorStop(double level, StopUnit unit, int argb) {
 
+    /**
+     * Checks that the unit is given, the level finite and a percent level in [0, 100].
+     *
+     * @param level a percent of the DEM's range in [0, 100] ({@link StopUnit#PERCENT}) or an elevation ({@link
+     *     StopUnit#ABSOLUTE}); finite
+     * @param unit what {@code level} measures
+     * @param argb the colour at the stop
+     */
     public ColorStop {
         Objects.requireNonNull(unit, "unit");
         if (!Double.isFinite(level)) {

@@ -25,6 +25,14 @@ import java.util.function.ToDoubleFunction;
 public record StopRamp(String name, List<ColorStop> stops, ColorSelection selection, int noDataArgb)
         implements ColorRamp {
 
+    /**
+     * Checks that the name and selection are given, and copies the stops, of which there must be at least one.
+     *
+     * @param name a short name for messages
+     * @param stops at least one stop (copied)
+     * @param selection how colours between stops are chosen
+     * @param noDataArgb the colour of no-data cells (NaN); {@code 0} = transparent
+     */
     public StopRamp {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(selection, "selection");

@@ -19,6 +19,13 @@ import java.util.Objects;
  */
 public record TopoBathyRamp(String name, StopRamp land, StopRamp sea) implements ColorRamp {
 
+    /**
+     * Checks that the name and both ramps are given.
+     *
+     * @param name a short name for messages
+     * @param land the ramp above sea level, and the whole ramp when the DEM does not hold both land and sea
+     * @param sea the ramp below sea level
+     */
     public TopoBathyRamp {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(land, "land");
