@@ -64,12 +64,27 @@ public record CrsInfo(String name, Integer epsg, Kind kind, double linearUnitMet
         }
     }
 
-    /** A geographic CRS on the given ellipsoid (WGS 84 when {@code null}), with no SIS object. */
+    /**
+     * A geographic CRS on the given ellipsoid (WGS 84 when {@code null}), with no SIS object.
+     *
+     * @param name a human-readable name, or {@code null} when unknown
+     * @param epsg the EPSG code, or {@code null}
+     * @param ellipsoid the ellipsoid, or {@code null} for WGS 84
+     * @return a geographic CRS, not assumed
+     */
     public static CrsInfo geographic(String name, Integer epsg, Ellipsoid ellipsoid) {
         return new CrsInfo(name, epsg, Kind.GEOGRAPHIC, Double.NaN, ellipsoid, null, false);
     }
 
-    /** A projected CRS in a unit of the given length in metres, with no SIS object. */
+    /**
+     * A projected CRS in a unit of the given length in metres, with no SIS object.
+     *
+     * @param name a human-readable name, or {@code null} when unknown
+     * @param epsg the EPSG code, or {@code null}
+     * @param linearUnitMeters metres per axis unit, positive (0.3048 for the international foot)
+     * @param ellipsoid the ellipsoid, or {@code null} when unknown
+     * @return a projected CRS, not assumed
+     */
     public static CrsInfo projected(String name, Integer epsg, double linearUnitMeters, Ellipsoid ellipsoid) {
         return new CrsInfo(name, epsg, Kind.PROJECTED, linearUnitMeters, ellipsoid, null, false);
     }
@@ -89,7 +104,11 @@ public record CrsInfo(String name, Integer epsg, Kind kind, double linearUnitMet
         return kind == Kind.GEOGRAPHIC;
     }
 
-    /** The Apache SIS CRS when one was resolved ({@link CrsResolver#complete} resolves one from the EPSG code). */
+    /**
+     * The Apache SIS CRS when one was resolved ({@link CrsResolver#complete} resolves one from the EPSG code).
+     *
+     * @return the SIS CRS, or empty
+     */
     public Optional<CoordinateReferenceSystem> sis() {
         return Optional.ofNullable(sisCrs);
     }

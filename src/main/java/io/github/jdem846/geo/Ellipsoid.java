@@ -38,7 +38,13 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
         }
     }
 
-    /** A sphere of the given radius in metres. */
+    /**
+     * A sphere of the given radius in metres.
+     *
+     * @param name the name for messages
+     * @param radius the radius in metres, positive and finite
+     * @return an ellipsoid of infinite inverse flattening
+     */
     public static Ellipsoid sphere(String name, double radius) {
         return new Ellipsoid(name, radius, Double.POSITIVE_INFINITY);
     }
@@ -67,13 +73,21 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
     /**
      * Radius of curvature in the prime vertical, N(φ) = a/√(1 − e² sin²φ), in metres. The length of one radian
      * of longitude along the parallel at φ is N(φ)·cos φ.
+     *
+     * @param latitudeRadians the geodetic latitude φ in radians
+     * @return N(φ) in metres
      */
     public double primeVerticalRadius(double latitudeRadians) {
         double s = Math.sin(latitudeRadians);
         return semiMajorAxis / Math.sqrt(1 - eccentricitySquared() * s * s);
     }
 
-    /** Radius of curvature in the meridian, M(φ) = a(1 − e²)/(1 − e² sin²φ)^1.5, in metres. */
+    /**
+     * Radius of curvature in the meridian, M(φ) = a(1 − e²)/(1 − e² sin²φ)^1.5, in metres.
+     *
+     * @param latitudeRadians the geodetic latitude φ in radians
+     * @return M(φ) in metres
+     */
     public double meridionalRadius(double latitudeRadians) {
         double e2 = eccentricitySquared();
         double s = Math.sin(latitudeRadians);
@@ -84,6 +98,10 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
     /**
      * Length in metres of an arc of longitude {@code deltaLonDegrees} along the parallel at
      * {@code latitudeDegrees}. Exactly 0 at the poles (cos 90° is clamped so no negative length appears).
+     *
+     * @param latitudeDegrees the parallel's geodetic latitude in degrees
+     * @param deltaLonDegrees the arc's extent in degrees of longitude, either sign
+     * @return the length in metres, ≥ 0
      */
     public double parallelArcLength(double latitudeDegrees, double deltaLonDegrees) {
         double phi = Math.toRadians(clampLatitude(latitudeDegrees));
@@ -94,6 +112,10 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
     /**
      * Length in metres of the meridian arc between two latitudes (degrees), by Simpson's rule on M(φ), which is
      * exact to well under a millimetre for any DEM cell.
+     *
+     * @param latitude1Degrees one end's geodetic latitude
+     * @param latitude2Degrees the other end's geodetic latitude
+     * @return the length in metres, ≥ 0, in either order
      */
     public double meridianArcLength(double latitude1Degrees, double latitude2Degrees) {
         double p1 = Math.toRadians(clampLatitude(latitude1Degrees));

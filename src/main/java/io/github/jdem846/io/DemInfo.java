@@ -46,7 +46,19 @@ public record DemInfo(String source, DemFormat format, SampleType dataType, int 
         members = List.copyOf(members);
     }
 
-    /** The header of one file (no members). */
+    /**
+     * The header of one file (no members).
+     *
+     * @param source the file (or the bundled sample's name; for a mosaic, the {@code .vrt} or a short list of the
+     *     files)
+     * @param format the file format
+     * @param dataType how elevations are stored
+     * @param bands number of bands in the file (band 1 is read)
+     * @param geometry grid size, georeferencing (outer-corner form) and CRS
+     * @param declaredNoData the no-data value the file declares; {@code null} when it declares none, NaN when it
+     *     declares NaN
+     * @param notices things a person should know (assumptions, ignored bands, unresolved CRS codes)
+     */
     public DemInfo(String source, DemFormat format, SampleType dataType, int bands, GridGeometry geometry,
                    Double declaredNoData, List<String> notices) {
         this(source, format, dataType, bands, geometry, declaredNoData, notices, List.of());
