@@ -18,6 +18,8 @@ public final class PngBytes {
      *
      * @param argb             pixels, row-major, {@code width × height}
      * @param compressionLevel deflate level 0 to 9
+     * @param width pixels per row
+     * @param height rows
      * @return the file's bytes
      */
     public static byte[] rgba(int[] argb, int width, int height, int compressionLevel) {

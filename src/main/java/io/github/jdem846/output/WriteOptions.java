@@ -109,52 +109,96 @@ public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, D
     /**
      * No sidecars (ask for them with {@link #withSidecars}), {@code .pgw}/{@code .tfw} naming, no no-data tag, PNG
      * level 1, parallel, GeoTIFF strips (COG tiles of 512): the files the CLI writes without {@code --world-file}.
+     *
+     * @return the default options
      */
     public static WriteOptions defaults() {
         return new WriteOptions(Sidecars.NONE, WorldFileNaming.FORMAT, null, 1, true, TiffLayout.STRIPS,
                 DEFAULT_COG_TILE_SIZE, DEFAULT_JPEG_QUALITY, null);
     }
 
+    /**
+     * A copy that writes the given sidecars (world file, {@code .prj}, {@code .aux.xml}).
+     *
+     * @param value which sidecars to write
+     * @return a new options record; this one is unchanged
+     */
     public WriteOptions withSidecars(Sidecars value) {
         return new WriteOptions(value, worldFileNaming, noData, pngCompressionLevel, parallelCompression, tiffLayout,
                 cogTileSize, jpegQuality, background);
     }
 
+    /**
+     * A copy that names the world file as given.
+     *
+     * @param value how the world file is named
+     * @return a new options record; this one is unchanged
+     */
     public WriteOptions withWorldFileNaming(WorldFileNaming value) {
         return new WriteOptions(sidecars, value, noData, pngCompressionLevel, parallelCompression, tiffLayout,
                 cogTileSize, jpegQuality, background);
     }
 
-    /** A copy with the given GeoTIFF no-data value. */
+    /**
+     * A copy with the given GeoTIFF no-data value.
+     *
+     * @param value the value written as the GeoTIFF's no-data tag
+     * @return a new options record; this one is unchanged
+     */
     public WriteOptions withNoData(double value) {
         return new WriteOptions(sidecars, worldFileNaming, value, pngCompressionLevel, parallelCompression,
                 tiffLayout, cogTileSize, jpegQuality, background);
     }
 
-    /** A copy without a GeoTIFF no-data value. */
+    /**
+     * A copy without a GeoTIFF no-data value.
+     *
+     * @return a new options record; this one is unchanged
+     */
     public WriteOptions withoutNoData() {
         return new WriteOptions(sidecars, worldFileNaming, null, pngCompressionLevel, parallelCompression,
                 tiffLayout, cogTileSize, jpegQuality, background);
     }
 
+    /**
+     * A copy with another PNG deflate level.
+     *
+     * @param value the level, 0 (none) to 9 (smallest)
+     * @return a new options record; this one is unchanged
+     */
     public WriteOptions withPngCompressionLevel(int value) {
         return new WriteOptions(sidecars, worldFileNaming, noData, value, parallelCompression, tiffLayout,
                 cogTileSize, jpegQuality, background);
     }
 
-    /** A copy that compresses on all processors, or on the calling thread only. */
+    /**
+     * A copy that compresses on all processors, or on the calling thread only.
+     *
+     * @param value true to compress on all processors
+     * @return a new options record; this one is unchanged
+     */
     public WriteOptions withParallelCompression(boolean value) {
         return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, value, tiffLayout,
                 cogTileSize, jpegQuality, background);
     }
 
-    /** A copy writing GeoTIFFs in strips or as a Cloud-Optimized GeoTIFF (PNG files refuse the COG layout). */
+    /**
+     * A copy writing GeoTIFFs in strips or as a Cloud-Optimized GeoTIFF (PNG files refuse the COG layout).
+     *
+     * @param value strips or COG
+     * @return a new options record; this one is unchanged
+     */
     public WriteOptions withTiffLayout(TiffLayout value) {
         return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, parallelCompression, value,
                 cogTileSize, jpegQuality, background);
     }
 
-    /** A copy with COG tiles of {@code value} × {@code value} pixels (a multiple of 16 from 16 to 4096). */
+    /**
+     * A copy with COG tiles of {@code value} × {@code value} pixels (a multiple of 16 from 16 to 4096).
+     *
+     * @param value the tile side in pixels
+     * @return a new options record; this one is unchanged
+     */
     public WriteOptions withCogTileSize(int value) {
         return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, parallelCompression,
                 tiffLayout, value, jpegQuality, background);

@@ -7,6 +7,7 @@ package io.github.jdem846.raster;
  * @param max        highest valid elevation, NaN when there is none
  * @param validCount number of cells that hold an elevation
  * @param totalCount number of cells
+ * @serial exclude
  */
 public record ElevationStatistics(double min, double max, long validCount, long totalCount)
         implements java.io.Serializable {
