@@ -81,30 +81,56 @@ public record HillshadeOptions(double zFactor, double lightMultiple, double rela
         }
     }
 
-    /** The same options with another vertical exaggeration. */
+    /**
+     * The same options with another vertical exaggeration.
+     *
+     * @param z the z-factor, positive, at most 1e6
+     * @return a new options record; this one is unchanged
+     */
     public HillshadeOptions withZFactor(double z) {
         return new HillshadeOptions(z, lightMultiple, relativeLightIntensity, relativeDarkIntensity, spotExponent,
                 horizontalScale);
     }
 
-    /** The same options with another light multiple (jDem846 normals only). */
+    /**
+     * The same options with another light multiple (jDem846 normals only).
+     *
+     * @param m the light multiple, 0 to 1e6
+     * @return a new options record; this one is unchanged
+     */
     public HillshadeOptions withLightMultiple(double m) {
         return new HillshadeOptions(zFactor, m, relativeLightIntensity, relativeDarkIntensity, spotExponent,
                 horizontalScale);
     }
 
-    /** The same options with other relative light and dark intensities. */
+    /**
+     * The same options with other relative light and dark intensities.
+     *
+     * @param light the relative light intensity, 0 to 1
+     * @param dark the relative dark intensity, 0 to 1
+     * @return a new options record; this one is unchanged
+     */
     public HillshadeOptions withIntensities(double light, double dark) {
         return new HillshadeOptions(zFactor, lightMultiple, light, dark, spotExponent, horizontalScale);
     }
 
-    /** The same options with another spot exponent. */
+    /**
+     * The same options with another spot exponent.
+     *
+     * @param spot the spot exponent, 0.01 to 128
+     * @return a new options record; this one is unchanged
+     */
     public HillshadeOptions withSpotExponent(double spot) {
         return new HillshadeOptions(zFactor, lightMultiple, relativeLightIntensity, relativeDarkIntensity, spot,
                 horizontalScale);
     }
 
-    /** The same options with gdaldem's {@code -s} semantic: cell size in CRS units × {@code scale}. */
+    /**
+     * The same options with gdaldem's {@code -s} semantic: cell size in CRS units × {@code scale}.
+     *
+     * @param scale CRS units to metres, positive, or NaN for the geometry's metric cell sizes
+     * @return a new options record; this one is unchanged
+     */
     public HillshadeOptions withHorizontalScale(double scale) {
         return new HillshadeOptions(zFactor, lightMultiple, relativeLightIntensity, relativeDarkIntensity,
                 spotExponent, scale);
@@ -123,6 +149,9 @@ public record HillshadeOptions(double zFactor, double lightMultiple, double rela
     /**
      * The jDem846 tone of an illumination {@code d} in [−1, 1]: the light/dark intensity step, then the
      * sign-preserving spot exponent ({@link Brightness#intensity}, {@link Brightness#spot}). NaN stays NaN.
+     *
+     * @param d the illumination, in [−1, 1], or NaN
+     * @return the tone, or NaN
      */
     public double tone(double d) {
         return Brightness.spot(Brightness.intensity(d, relativeLightIntensity, relativeDarkIntensity), spotExponent);

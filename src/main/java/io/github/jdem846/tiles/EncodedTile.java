@@ -8,6 +8,7 @@ import java.util.Objects;
  *
  * @param tile where it goes
  * @param png  the whole PNG file (the array is shared, not copied)
+ * @serial exclude
  */
 public record EncodedTile(WebMercatorTile tile, byte[] png) implements Serializable {
 

@@ -14,6 +14,7 @@ import java.util.List;
  * @param minY first row (north)
  * @param maxX last column (inclusive)
  * @param maxY last row (inclusive)
+ * @serial exclude
  */
 public record TileGroup(int z, int minX, int minY, int maxX, int maxY) implements Serializable {
 

@@ -74,38 +74,65 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
         }
     }
 
-    /** Tiles of {@code dem} at {@code zooms} with the original's scene and light, on every processor. */
+    /**
+     * Tiles of {@code dem} at {@code zooms} with the original's scene and light, on every processor.
+     *
+     * @param dem the DEM file
+     * @param zooms the zoom levels
+     * @return the job
+     */
     public static TileJob of(Path dem, ZoomRange zooms) {
         return of(DemInput.of(dem), zooms);
     }
 
-    /** Tiles of {@code dem} (one file or several read as one grid) at {@code zooms}, with the defaults. */
+    /**
+     * Tiles of {@code dem} (one file or several read as one grid) at {@code zooms}, with the defaults.
+     *
+     * @param dem the file or files
+     * @param zooms the zoom levels
+     * @return the job
+     */
     public static TileJob of(DemInput dem, ZoomRange zooms) {
         return new TileJob(dem, zooms, Scene.defaults(), Sun.ORIGINAL_DEFAULT, RenderSettings.defaults(),
                 DEFAULT_PNG_COMPRESSION);
     }
 
-    /** @return a copy with other zoom levels */
+    /**
+     * @param value the zoom levels
+     * @return a copy with other zoom levels
+     */
     public TileJob withZooms(ZoomRange value) {
         return new TileJob(input, value, scene, sun, execution, pngCompression);
     }
 
-    /** @return a copy with another scene */
+    /**
+     * @param value the scene
+     * @return a copy with another scene
+     */
     public TileJob withScene(Scene value) {
         return new TileJob(input, zooms, value, sun, execution, pngCompression);
     }
 
-    /** @return a copy with another light */
+    /**
+     * @param value the sun
+     * @return a copy with another light
+     */
     public TileJob withSun(Sun value) {
         return new TileJob(input, zooms, scene, value, execution, pngCompression);
     }
 
-    /** @return a copy with other threads and renderer tile size */
+    /**
+     * @param value threads and renderer tile size
+     * @return a copy with other threads and renderer tile size
+     */
     public TileJob withExecution(RenderSettings value) {
         return new TileJob(input, zooms, scene, sun, value, pngCompression);
     }
 
-    /** @return a copy with another PNG deflate level */
+    /**
+     * @param value the deflate level, 0 to 9
+     * @return a copy with another PNG deflate level
+     */
     public TileJob withPngCompression(int value) {
         return new TileJob(input, zooms, scene, sun, execution, value);
     }
@@ -117,6 +144,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      *
      * @param listener told of progress ("statistics": rows of the DEM streamed for its range, then "tiles": tiles
      *                 done, of all), notices and the sun computed
+     * @param output the {@code .pmtiles} file or the directory
      * @return what was written
      * @throws IOException              when the DEM cannot be read or the output not written (naming the file)
      * @throws IllegalArgumentException when the settings do not make sense for map tiles (a sun per tile, a fixed
@@ -150,6 +178,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * Checks, before any work, that the pyramid can be written to {@code output} ({@link TileSink#open}) and that
      * it is none of the input files.
      *
+     * @param output the {@code .pmtiles} file or the directory
      * @return the format {@code output} names
      * @throws io.github.jdem846.output.OutputOverwritesInputException when {@code output} is an input file or its
      *                                  sidecar, however spelt (a symbolic link, a relative path)

@@ -37,6 +37,9 @@ public record TileRange(int z, int minX, int minY, int maxX, int maxY) {
      * does not bring in the tile beyond it. Latitudes beyond ±{@link io.github.jdem846.geo.WebMercator#MAX_LATITUDE}
      * are clamped; longitudes are taken as they are (a box must not cross the antimeridian).
      *
+     * @param box the area, degrees
+     * @param z zoom
+     * @return the range of tiles
      * @throws IllegalArgumentException when the box is empty or not finite
      */
     public static TileRange covering(LatLonBox box, int z) {
@@ -59,7 +62,10 @@ public record TileRange(int z, int minX, int minY, int maxX, int maxY) {
         return (long) (maxX - minX + 1) * (maxY - minY + 1);
     }
 
-    /** @return whether the tile is in this range */
+    /**
+     * @param t a tile of any zoom
+     * @return whether the tile is in this range
+     */
     public boolean contains(WebMercatorTile t) {
         return t.z() == z && t.x() >= minX && t.x() <= maxX && t.y() >= minY && t.y() <= maxY;
     }

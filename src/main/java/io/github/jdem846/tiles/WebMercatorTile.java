@@ -12,6 +12,7 @@ import io.github.jdem846.geo.WebMercator;
  * @param z zoom, 0 to {@link #MAX_ZOOM}
  * @param x column, 0 to 2^z − 1
  * @param y row, 0 to 2^z − 1
+ * @serial exclude
  */
 public record WebMercatorTile(int z, int x, int y) implements java.io.Serializable {
 
@@ -44,6 +45,11 @@ public record WebMercatorTile(int z, int x, int y) implements java.io.Serializab
     /**
      * The tile at zoom {@code z} that holds the point: longitude wrapped into [−180, 180), latitude clamped to
      * ±{@link WebMercator#MAX_LATITUDE}; a point on a tile edge belongs to the tile east or south of it.
+     *
+     * @param latitude degrees north
+     * @param longitude degrees east
+     * @param z zoom, 0 to {@link #MAX_ZOOM}
+     * @return the tile
      */
     public static WebMercatorTile containing(double latitude, double longitude, int z) {
         if (!Double.isFinite(latitude) || !Double.isFinite(longitude)) {
@@ -67,7 +73,10 @@ public record WebMercatorTile(int z, int x, int y) implements java.io.Serializab
         return (WebMercator.HALF_WORLD - WebMercator.y(latitude)) / (2 * WebMercator.HALF_WORLD) * (1 << z);
     }
 
-    /** @return the size in Web Mercator metres of one pixel at zoom z (156 543.03… m at zoom 0) */
+    /**
+     * @param z zoom
+     * @return the size in Web Mercator metres of one pixel at zoom z (156 543.03… m at zoom 0)
+     */
     public static double pixelSize(int z) {
         return 2 * WebMercator.HALF_WORLD / ((double) SIZE * (1L << checkZoom(z)));
     }

@@ -24,6 +24,8 @@ public record ZoomRange(int min, int max) {
     /**
      * Parses {@code "MIN-MAX"} or a single level {@code "Z"}.
      *
+     * @param text the text, e.g. {@code "8-12"} or {@code "10"}
+     * @return the range
      * @throws IllegalArgumentException naming what is wrong
      */
     public static ZoomRange parse(String text) {

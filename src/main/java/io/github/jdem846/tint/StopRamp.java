@@ -42,17 +42,33 @@ public record StopRamp(String name, List<ColorStop> stops, ColorSelection select
         }
     }
 
-    /** An interpolating ramp with transparent no-data. */
+    /**
+     * An interpolating ramp with transparent no-data.
+     *
+     * @param name the ramp's name, for messages
+     * @param stops the stops, at least one
+     * @return the ramp
+     */
     public static StopRamp of(String name, List<ColorStop> stops) {
         return new StopRamp(name, stops, ColorSelection.INTERPOLATE, Argb.TRANSPARENT);
     }
 
-    /** The same stops with another selection mode. */
+    /**
+     * The same stops with another selection mode.
+     *
+     * @param newSelection how a colour is picked between stops
+     * @return a new ramp; this one is unchanged
+     */
     public StopRamp withSelection(ColorSelection newSelection) {
         return new StopRamp(name, stops, newSelection, noDataArgb);
     }
 
-    /** The same stops with another no-data colour (non-premultiplied ARGB). */
+    /**
+     * The same stops with another no-data colour (non-premultiplied ARGB).
+     *
+     * @param argb the colour of no-data cells, 0xAARRGGBB
+     * @return a new ramp; this one is unchanged
+     */
     public StopRamp withNoDataColor(int argb) {
         return new StopRamp(name, stops, selection, argb);
     }
