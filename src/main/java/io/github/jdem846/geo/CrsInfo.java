@@ -89,17 +89,17 @@ public record CrsInfo(String name, Integer epsg, Kind kind, double linearUnitMet
         return new CrsInfo(name, epsg, Kind.PROJECTED, linearUnitMeters, ellipsoid, null, false);
     }
 
-    /** @return the same CRS flagged as inferred rather than read from the file */
+    /** {@return the same CRS flagged as inferred rather than read from the file} */
     public CrsInfo asAssumed() {
         return new CrsInfo(name, epsg, kind, linearUnitMeters, ellipsoid, sisCrs, true);
     }
 
-    /** @return the ellipsoid to use for metric sizes: the CRS's own, or WGS 84 when it names none */
+    /** {@return the ellipsoid to use for metric sizes: the CRS's own, or WGS 84 when it names none} */
     public Ellipsoid ellipsoidOrWgs84() {
         return ellipsoid != null ? ellipsoid : Ellipsoid.WGS84;
     }
 
-    /** @return true when the axes are degrees of longitude and latitude */
+    /** {@return true when the axes are degrees of longitude and latitude} */
     public boolean isGeographic() {
         return kind == Kind.GEOGRAPHIC;
     }

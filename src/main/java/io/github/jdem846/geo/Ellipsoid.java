@@ -49,23 +49,23 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
         return new Ellipsoid(name, radius, Double.POSITIVE_INFINITY);
     }
 
-    /** @return the flattening f = (a − b)/a; 0 for a sphere */
+    /** {@return the flattening f = (a − b)/a; 0 for a sphere} */
     public double flattening() {
         return Double.isInfinite(inverseFlattening) ? 0 : 1 / inverseFlattening;
     }
 
-    /** @return the first eccentricity squared e² = f(2 − f) */
+    /** {@return the first eccentricity squared e² = f(2 − f)} */
     public double eccentricitySquared() {
         double f = flattening();
         return f * (2 - f);
     }
 
-    /** @return the polar radius b, in metres */
+    /** {@return the polar radius b, in metres} */
     public double semiMinorAxis() {
         return semiMajorAxis * (1 - flattening());
     }
 
-    /** @return the mean radius (2a + b)/3, in metres (IUGG R1) */
+    /** {@return the mean radius (2a + b)/3, in metres (IUGG R1)} */
     public double meanRadius() {
         return (2 * semiMajorAxis + semiMinorAxis()) / 3;
     }

@@ -49,17 +49,17 @@ public record UtmZone(int epsg, String datum, int zone, boolean south, Ellipsoid
         return Optional.empty();
     }
 
-    /** @return the CRS's EPSG name, e.g. "WGS 84 / UTM zone 11N" */
+    /** {@return the CRS's EPSG name, e.g. "WGS 84 / UTM zone 11N"} */
     public String name() {
         return datum + " / UTM zone " + zone + (south ? "S" : "N");
     }
 
-    /** @return the longitude of the zone's central meridian, degrees */
+    /** {@return the longitude of the zone's central meridian, degrees} */
     public double centralMeridian() {
         return -183.0 + 6.0 * zone;
     }
 
-    /** @return the CRS as a reader describes it: projected, in metres, on the datum's ellipsoid, no SIS object yet */
+    /** {@return the CRS as a reader describes it: projected, in metres, on the datum's ellipsoid, no SIS object yet} */
     public CrsInfo crsInfo() {
         return CrsInfo.projected(name(), epsg, 1.0, ellipsoid);
     }

@@ -34,17 +34,19 @@ public final class WebMercator {
     }
 
     /**
+     * {@return x in metres of {@code longitude} degrees (not wrapped: 180° gives HALF_WORLD)}
+     *
      * @param longitude degrees east
-     * @return x in metres of {@code longitude} degrees (not wrapped: 180° gives HALF_WORLD)
      */
     public static double x(double longitude) {
         return RADIUS * Math.toRadians(longitude);
     }
 
     /**
+     * {@return y in metres of {@code latitude} degrees, the latitude clamped to ±{@link #MAX_LATITUDE} first (so the
+     * poles map to the edges of the world, not to infinity)}
+     *
      * @param latitude degrees north
-     * @return y in metres of {@code latitude} degrees, the latitude clamped to ±{@link #MAX_LATITUDE} first (so
-     * the poles map to the edges of the world, not to infinity)
      */
     public static double y(double latitude) {
         double phi = Math.toRadians(Math.max(-MAX_LATITUDE, Math.min(MAX_LATITUDE, latitude)));
@@ -52,24 +54,27 @@ public final class WebMercator {
     }
 
     /**
+     * {@return the longitude in degrees of {@code x} metres (not wrapped)}
+     *
      * @param x metres east of the central meridian
-     * @return the longitude in degrees of {@code x} metres (not wrapped)
      */
     public static double longitude(double x) {
         return Math.toDegrees(x / RADIUS);
     }
 
     /**
+     * {@return the latitude in degrees of {@code y} metres: atan(sinh(y/R))}
+     *
      * @param y metres north of the equator
-     * @return the latitude in degrees of {@code y} metres: atan(sinh(y/R))
      */
     public static double latitude(double y) {
         return Math.toDegrees(Math.atan(Math.sinh(y / RADIUS)));
     }
 
     /**
+     * {@return the degrees of longitude that {@code dx} metres of x span}
+     *
      * @param dx a distance along x in metres
-     * @return the degrees of longitude that {@code dx} metres of x span
      */
     public static double longitudeSpan(double dx) {
         return Math.toDegrees(dx / RADIUS);

@@ -64,7 +64,7 @@ public record DemInfo(String source, DemFormat format, SampleType dataType, int 
         this(source, format, dataType, bands, geometry, declaredNoData, notices, List.of());
     }
 
-    /** @return true when this describes several files read as one grid */
+    /** {@return true when this describes several files read as one grid} */
     public boolean isMosaic() {
         return !members.isEmpty();
     }
@@ -89,12 +89,12 @@ public record DemInfo(String source, DemFormat format, SampleType dataType, int 
         return new DemInfo(source, format, dataType, bands, newGeometry, declaredNoData, notices, members);
     }
 
-    /** @return columns */
+    /** {@return columns} */
     public int width() {
         return geometry.width();
     }
 
-    /** @return rows */
+    /** {@return rows} */
     public int height() {
         return geometry.height();
     }
@@ -110,7 +110,7 @@ public record DemInfo(String source, DemFormat format, SampleType dataType, int 
         return g == geometry ? this : withGeometry(g);
     }
 
-    /** @return the declared no-data value as {@link io.github.jdem846.raster.Dem} takes it: NaN when none */
+    /** {@return the declared no-data value as {@link io.github.jdem846.raster.Dem} takes it: NaN when none} */
     public double noDataOrNaN() {
         return declaredNoData != null ? declaredNoData : Double.NaN;
     }

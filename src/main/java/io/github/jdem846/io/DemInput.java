@@ -45,12 +45,12 @@ public record DemInput(List<Path> files) {
         return new DemInput(files);
     }
 
-    /** @return true when this is one file */
+    /** {@return true when this is one file} */
     public boolean isSingleFile() {
         return files.size() == 1;
     }
 
-    /** @return the first file (the only one of a single-file input) */
+    /** {@return the first file (the only one of a single-file input)} */
     public Path first() {
         return files.get(0);
     }

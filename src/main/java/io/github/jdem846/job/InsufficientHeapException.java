@@ -25,7 +25,7 @@ public final class InsufficientHeapException extends RuntimeException {
         this.advises = advises;
     }
 
-    /** @return true when the message already says what would make the picture fit */
+    /** {@return true when the message already says what would make the picture fit} */
     public boolean givesAdvice() {
         return advises;
     }

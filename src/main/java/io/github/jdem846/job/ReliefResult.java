@@ -57,12 +57,12 @@ public record ReliefResult(ReliefJob job, DemInfo source, GridGeometry geometry,
         return new ReliefResult(job, source, geometry, null, Objects.requireNonNull(gray, "gray"), sun);
     }
 
-    /** @return pixels across */
+    /** {@return pixels across} */
     public int width() {
         return geometry.width();
     }
 
-    /** @return pixels down */
+    /** {@return pixels down} */
     public int height() {
         return geometry.height();
     }

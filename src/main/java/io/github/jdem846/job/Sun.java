@@ -105,7 +105,7 @@ public record Sun(LightDirection direction, ZonedDateTime time, LatLon place, bo
         return new Sun(direction, time, place, perTile, value);
     }
 
-    /** @return true when the sun is given by date and time */
+    /** {@return true when the sun is given by date and time} */
     public boolean byTime() {
         return time != null;
     }

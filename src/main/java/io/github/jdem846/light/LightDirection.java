@@ -73,27 +73,27 @@ public record LightDirection(double azimuthDegrees, double elevationDegrees) {
         return new LightDirection(azimuthDegrees, Math.toDegrees(Math.atan2(Math.sin(e), k * Math.cos(e))));
     }
 
-    /** @return the east component of the unit vector toward the light */
+    /** {@return the east component of the unit vector toward the light} */
     public double east() {
         return Math.cos(Math.toRadians(elevationDegrees)) * Math.sin(Math.toRadians(azimuthDegrees));
     }
 
-    /** @return the north component of the unit vector toward the light */
+    /** {@return the north component of the unit vector toward the light} */
     public double north() {
         return Math.cos(Math.toRadians(elevationDegrees)) * Math.cos(Math.toRadians(azimuthDegrees));
     }
 
-    /** @return the up component of the unit vector toward the light (sin of the elevation) */
+    /** {@return the up component of the unit vector toward the light (sin of the elevation)} */
     public double up() {
         return Math.sin(Math.toRadians(elevationDegrees));
     }
 
-    /** @return true when the light is at or below the horizon: no direct light reaches any cell */
+    /** {@return true when the light is at or below the horizon: no direct light reaches any cell} */
     public boolean isBelowHorizon() {
         return elevationDegrees <= 0;
     }
 
-    /** @return true when the light is at the zenith: nothing casts a shadow */
+    /** {@return true when the light is at the zenith: nothing casts a shadow} */
     public boolean isAtZenith() {
         return elevationDegrees >= 90;
     }

@@ -205,8 +205,9 @@ public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, D
     }
 
     /**
+     * {@return these options with that JPEG quality}
+     *
      * @param value JPEG quality 1..100
-     * @return these options with that JPEG quality
      */
     public WriteOptions withJpegQuality(int value) {
         return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, parallelCompression,
@@ -214,8 +215,9 @@ public record WriteOptions(Sidecars sidecars, WorldFileNaming worldFileNaming, D
     }
 
     /**
+     * {@return these options with that background}
+     *
      * @param argb the colour an RGBA picture is laid on (0xAARRGGBB), or {@code null} to keep transparency
-     * @return these options with that background
      */
     public WriteOptions withBackground(Integer argb) {
         return new WriteOptions(sidecars, worldFileNaming, noData, pngCompressionLevel, parallelCompression,

@@ -124,12 +124,12 @@ public record ProjectedExtent(double west, double south, double east, double nor
         return k + 1;
     }
 
-    /** @return east − west */
+    /** {@return east − west} */
     public double width() {
         return east - west;
     }
 
-    /** @return north − south */
+    /** {@return north − south} */
     public double height() {
         return north - south;
     }

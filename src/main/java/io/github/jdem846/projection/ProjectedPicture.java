@@ -41,13 +41,13 @@ public record ProjectedPicture(MapProjection projection, ProjectedExtent extent,
         }
     }
 
-    /** @return where the picture lies, in the projection's CRS (EPSG code when it has one, else its WKT) */
+    /** {@return where the picture lies, in the projection's CRS (EPSG code when it has one, else its WKT)} */
     public GeoReference geoReference() {
         return new GeoReference(extent.west(), extent.north(), extent.east(), extent.south(),
                 projection.crsInfo());
     }
 
-    /** @return a {@code TYPE_INT_ARGB} image backed by the pixels (no copy) */
+    /** {@return a {@code TYPE_INT_ARGB} image backed by the pixels (no copy)} */
     public BufferedImage toBufferedImage() {
         return ImageOutput.toBufferedImage(argb, width, height);
     }

@@ -69,12 +69,12 @@ public record ElevationStatistics(double min, double max, long validCount, long 
                 validCount + other.validCount, totalCount + other.totalCount);
     }
 
-    /** @return the number of no-data cells */
+    /** {@return the number of no-data cells} */
     public long noDataCount() {
         return totalCount - validCount;
     }
 
-    /** @return true when no cell holds an elevation */
+    /** {@return true when no cell holds an elevation} */
     public boolean isEmpty() {
         return validCount == 0;
     }

@@ -44,6 +44,8 @@ public final class GridGeometry {
     private volatile Optional<GeoLocator> locator; // derived from crs, built on first use
 
     /**
+     * A grid placed in a CRS, not cut from another.
+     *
      * @param width          number of columns, ≥ 1
      * @param height         number of rows, ≥ 1
      * @param originX        world x of the west edge of column 0
@@ -105,7 +107,7 @@ public final class GridGeometry {
     public record Placement(int col, int row, int rootWidth, int rootHeight) {
     }
 
-    /** @return where this grid lies in the grid it was cut from (see {@link Placement}) */
+    /** {@return where this grid lies in the grid it was cut from (see {@link Placement})} */
     public Placement placement() {
         return placement;
     }
@@ -124,42 +126,42 @@ public final class GridGeometry {
                 PixelAnchor.CORNER);
     }
 
-    /** @return number of columns, ≥ 1 */
+    /** {@return number of columns, ≥ 1} */
     public int width() {
         return width;
     }
 
-    /** @return number of rows, ≥ 1 */
+    /** {@return number of rows, ≥ 1} */
     public int height() {
         return height;
     }
 
-    /** @return world x of the west edge of the grid */
+    /** {@return world x of the west edge of the grid} */
     public double originX() {
         return originX;
     }
 
-    /** @return world y of the north edge of the grid */
+    /** {@return world y of the north edge of the grid} */
     public double originY() {
         return originY;
     }
 
-    /** @return cell width in CRS units */
+    /** {@return cell width in CRS units} */
     public double cellWidth() {
         return cellWidth;
     }
 
-    /** @return cell height in CRS units (positive) */
+    /** {@return cell height in CRS units (positive)} */
     public double cellHeight() {
         return cellHeight;
     }
 
-    /** @return the CRS ({@link CrsInfo#UNKNOWN} when unknown) */
+    /** {@return the CRS ({@link CrsInfo#UNKNOWN} when unknown)} */
     public CrsInfo crs() {
         return crs;
     }
 
-    /** @return whether the source file declared its georeferencing for cell corners or cell centres */
+    /** {@return whether the source file declared its georeferencing for cell corners or cell centres} */
     public PixelAnchor declaredAnchor() {
         return declaredAnchor;
     }
@@ -187,17 +189,17 @@ public final class GridGeometry {
         return rootOriginY - (placement.row() + row + 0.5) * cellHeight;
     }
 
-    /** @return world x of the east edge */
+    /** {@return world x of the east edge} */
     public double eastX() {
         return originX + width * cellWidth;
     }
 
-    /** @return world y of the south edge */
+    /** {@return world y of the south edge} */
     public double southY() {
         return originY - height * cellHeight;
     }
 
-    /** @return true when cell sizes in metres are known (projected with a known unit, or geographic) */
+    /** {@return true when cell sizes in metres are known (projected with a known unit, or geographic)} */
     public boolean hasMetricUnits() {
         return crs.kind() != CrsInfo.Kind.UNKNOWN;
     }
@@ -248,7 +250,7 @@ public final class GridGeometry {
         return rootOriginY - ((long) placement.row() + row) * cellHeight;
     }
 
-    /** @return the ellipsoid used for metric sizes (the CRS's, or WGS 84) */
+    /** {@return the ellipsoid used for metric sizes (the CRS's, or WGS 84)} */
     public Ellipsoid ellipsoid() {
         return crs.ellipsoidOrWgs84();
     }
@@ -314,7 +316,7 @@ public final class GridGeometry {
         }
     }
 
-    /** @return the latitude/longitude box of the grid's outer edges, when the CRS allows */
+    /** {@return the latitude/longitude box of the grid's outer edges, when the CRS allows} */
     public Optional<LatLonBox> latLonExtent() {
         return geoLocator().map(l -> l.extent(originX, southY(), eastX(), originY));
     }
@@ -404,7 +406,7 @@ public final class GridGeometry {
                 placement, true, rootOriginX, rootOriginY);
     }
 
-    /** @return true when metric cell sizes are measured on the ground ({@link #withGroundCellSizes()}) */
+    /** {@return true when metric cell sizes are measured on the ground ({@link #withGroundCellSizes()})} */
     public boolean hasGroundCellSizes() {
         return groundSizes;
     }

@@ -31,7 +31,7 @@ public final class GridRequestException extends IllegalArgumentException {
         this.part = java.util.Objects.requireNonNull(part, "part");
     }
 
-    /** @return the part of the request at fault */
+    /** {@return the part of the request at fault} */
     public Part part() {
         return part;
     }

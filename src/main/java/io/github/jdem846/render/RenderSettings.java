@@ -99,7 +99,7 @@ public record RenderSettings(int parallelism, int tileSize, ForkJoinPool pool) {
         return new RenderSettings(value, tileSize, pool);
     }
 
-    /** @return all available processors (at most {@link #MAX_PARALLELISM}) and the default tile size */
+    /** {@return all available processors (at most {@link #MAX_PARALLELISM}) and the default tile size} */
     public static RenderSettings defaults() {
         return new RenderSettings(Math.min(MAX_PARALLELISM, Runtime.getRuntime().availableProcessors()),
                 DEFAULT_TILE_SIZE);

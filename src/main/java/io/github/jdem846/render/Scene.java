@@ -222,7 +222,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
                 tintRange, lightModel, ambient, directions);
     }
 
-    /** @return true when the sky-view factor is to be computed (an ambient weight above 0) */
+    /** {@return true when the sky-view factor is to be computed (an ambient weight above 0)} */
     public boolean hasAmbient() {
         return ambient > 0;
     }
@@ -247,7 +247,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
         return light.central().forHeightsScaledBy(hillshadeOptions.zFactor());
     }
 
-    /** @return true when cast shadows are to be computed */
+    /** {@return true when cast shadows are to be computed} */
     public boolean hasShadows() {
         return shadows != null && shadows != ShadowAlgorithm.NONE;
     }

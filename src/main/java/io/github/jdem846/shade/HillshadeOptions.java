@@ -136,12 +136,12 @@ public record HillshadeOptions(double zFactor, double lightMultiple, double rela
                 spotExponent, scale);
     }
 
-    /** @return the same options with metric cell sizes from the DEM's geometry (no scale override) */
+    /** {@return the same options with metric cell sizes from the DEM's geometry (no scale override)} */
     public HillshadeOptions withMetricCellSize() {
         return withHorizontalScale(Double.NaN);
     }
 
-    /** @return true when the cell sizes come from a {@link #horizontalScale()} override rather than the geometry */
+    /** {@return true when the cell sizes come from a {@link #horizontalScale()} override rather than the geometry} */
     public boolean hasHorizontalScale() {
         return !Double.isNaN(horizontalScale);
     }

@@ -37,12 +37,12 @@ public final class ShadowMask {
         return new ShadowMask(width, height, a);
     }
 
-    /** @return number of columns */
+    /** {@return number of columns} */
     public int width() {
         return width;
     }
 
-    /** @return number of rows */
+    /** {@return number of rows} */
     public int height() {
         return height;
     }

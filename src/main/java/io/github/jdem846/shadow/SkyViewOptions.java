@@ -40,24 +40,27 @@ public record SkyViewOptions(int directions, double heightScale) {
     }
 
     /**
+     * {@return the same options with {@code d} directions}
+     *
      * @param d the number of azimuths, 4 to 360
-     * @return the same options with {@code d} directions
      */
     public SkyViewOptions withDirections(int d) {
         return new SkyViewOptions(d, heightScale);
     }
 
     /**
+     * {@return the same options with another height scale}
+     *
      * @param scale factor on heights (the z-factor), positive
-     * @return the same options with another height scale
      */
     public SkyViewOptions withHeightScale(double scale) {
         return new SkyViewOptions(directions, scale);
     }
 
     /**
+     * {@return the azimuth of direction {@code index}, degrees clockwise from north}
+     *
      * @param index 0 … directions − 1
-     * @return the azimuth of direction {@code index}, degrees clockwise from north
      */
     public double azimuth(int index) {
         return 360.0 * index / directions;

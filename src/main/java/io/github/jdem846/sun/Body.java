@@ -68,7 +68,7 @@ public record Body(String name, Ellipsoid ellipsoid, boolean isEarth) {
                 false);
     }
 
-    /** @return the mean radius in metres */
+    /** {@return the mean radius in metres} */
     public double radiusMeters() {
         return ellipsoid.meanRadius();
     }

@@ -100,7 +100,7 @@ public record Observer(double heightMeters, double pressureMillibars, double tem
         return new Observer(heightMeters, pressureMillibars, temperatureCelsius, OptionalDouble.of(seconds));
     }
 
-    /** @return true when ΔT is estimated from the date rather than given */
+    /** {@return true when ΔT is estimated from the date rather than given} */
     public boolean isDeltaTEstimated() {
         return deltaTSeconds.isEmpty();
     }

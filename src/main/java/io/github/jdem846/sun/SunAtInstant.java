@@ -52,17 +52,17 @@ public final class SunAtInstant {
         return new SunAtInstant(time, observer);
     }
 
-    /** @return the instant, in the zone it was given in */
+    /** {@return the instant, in the zone it was given in} */
     public ZonedDateTime time() {
         return time;
     }
 
-    /** @return the observer the positions are computed for */
+    /** {@return the observer the positions are computed for} */
     public Observer observer() {
         return observer;
     }
 
-    /** @return ΔT used, in seconds (given or estimated) */
+    /** {@return ΔT used, in seconds (given or estimated)} */
     public double deltaTSeconds() {
         return deltaTSeconds;
     }

@@ -77,7 +77,7 @@ public final class SunLightField implements LightField {
         return uniform;
     }
 
-    /** @return the sun on the sky at the grid's centre (for the twilight fade and for reporting) */
+    /** {@return the sun on the sky at the grid's centre (for the twilight fade and for reporting)} */
     public SunPosition centralSun() {
         return centralSun;
     }

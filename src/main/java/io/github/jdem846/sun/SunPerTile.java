@@ -156,22 +156,22 @@ public final class SunPerTile {
         return (a + b - 1) / b;
     }
 
-    /** @return cells per tile across */
+    /** {@return cells per tile across} */
     public int tileWidth() {
         return tileWidth;
     }
 
-    /** @return cells per tile down (the last row of tiles may be shorter) */
+    /** {@return cells per tile down (the last row of tiles may be shorter)} */
     public int tileHeight() {
         return tileHeight;
     }
 
-    /** @return the number of tile columns */
+    /** {@return the number of tile columns} */
     public int tilesAcross() {
         return tilesAcross;
     }
 
-    /** @return the number of tile rows */
+    /** {@return the number of tile rows} */
     public int tilesDown() {
         return tilesDown;
     }
@@ -252,7 +252,7 @@ public final class SunPerTile {
         }
     }
 
-    /** @return the largest minus the smallest elevation over all tiles, in degrees */
+    /** {@return the largest minus the smallest elevation over all tiles, in degrees} */
     public double elevationSpreadDegrees() {
         double min = Double.POSITIVE_INFINITY;
         double max = Double.NEGATIVE_INFINITY;
@@ -263,7 +263,7 @@ public final class SunPerTile {
         return max - min;
     }
 
-    /** @return the narrowest arc of azimuths that holds every tile's sun, in degrees (360 minus the widest gap) */
+    /** {@return the narrowest arc of azimuths that holds every tile's sun, in degrees (360 minus the widest gap)} */
     public double azimuthSpreadDegrees() {
         double[] az = Arrays.stream(suns).mapToDouble(SunPosition::azimuthDegrees).sorted().toArray();
         double widestGap = az[0] + 360 - az[az.length - 1];

@@ -29,12 +29,12 @@ public record SunPosition(double azimuthDegrees, double zenithDegrees) {
         azimuthDegrees = LightDirection.normalizeAzimuth(azimuthDegrees);
     }
 
-    /** @return elevation above the horizon, 90° − zenith, in [−90, 90]; negative when the sun is down */
+    /** {@return elevation above the horizon, 90° − zenith, in [−90, 90]; negative when the sun is down} */
     public double elevationDegrees() {
         return 90 - zenithDegrees;
     }
 
-    /** @return true when the sun's centre is at or below the horizon: no direct light (as {@link LightDirection}) */
+    /** {@return true when the sun's centre is at or below the horizon: no direct light (as {@link LightDirection})} */
     public boolean isBelowHorizon() {
         return elevationDegrees() <= 0;
     }

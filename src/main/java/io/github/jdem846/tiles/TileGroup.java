@@ -33,12 +33,12 @@ public record TileGroup(int z, int minX, int minY, int maxX, int maxY) implement
         new TileRange(z, minX, minY, maxX, maxY); // checks the bounds
     }
 
-    /** @return its tiles, row by row from the north-west */
+    /** {@return its tiles, row by row from the north-west} */
     public List<WebMercatorTile> tiles() {
         return new TileRange(z, minX, minY, maxX, maxY).tiles();
     }
 
-    /** @return how many tiles it holds */
+    /** {@return how many tiles it holds} */
     public int size() {
         return (maxX - minX + 1) * (maxY - minY + 1);
     }

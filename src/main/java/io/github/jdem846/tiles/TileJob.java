@@ -98,40 +98,45 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
     }
 
     /**
+     * {@return a copy with other zoom levels}
+     *
      * @param value the zoom levels
-     * @return a copy with other zoom levels
      */
     public TileJob withZooms(ZoomRange value) {
         return new TileJob(input, value, scene, sun, execution, pngCompression);
     }
 
     /**
+     * {@return a copy with another scene}
+     *
      * @param value the scene
-     * @return a copy with another scene
      */
     public TileJob withScene(Scene value) {
         return new TileJob(input, zooms, value, sun, execution, pngCompression);
     }
 
     /**
+     * {@return a copy with another light}
+     *
      * @param value the sun
-     * @return a copy with another light
      */
     public TileJob withSun(Sun value) {
         return new TileJob(input, zooms, scene, value, execution, pngCompression);
     }
 
     /**
+     * {@return a copy with other threads and renderer tile size}
+     *
      * @param value threads and renderer tile size
-     * @return a copy with other threads and renderer tile size
      */
     public TileJob withExecution(RenderSettings value) {
         return new TileJob(input, zooms, scene, sun, value, pngCompression);
     }
 
     /**
+     * {@return a copy with another PNG deflate level}
+     *
      * @param value the deflate level, 0 to 9
-     * @return a copy with another PNG deflate level
      */
     public TileJob withPngCompression(int value) {
         return new TileJob(input, zooms, scene, sun, execution, value);

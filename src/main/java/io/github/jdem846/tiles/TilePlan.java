@@ -152,22 +152,22 @@ public final class TilePlan {
         return finest == Integer.MAX_VALUE ? null : Overview.lazy(job.input(), finest);
     }
 
-    /** @return the job planned */
+    /** {@return the job planned} */
     public TileJob job() {
         return job;
     }
 
-    /** @return the whole DEM's elevations, which set the tint and the cast-shadow halos */
+    /** {@return the whole DEM's elevations, which set the tint and the cast-shadow halos} */
     public ElevationStatistics range() {
         return range;
     }
 
-    /** @return every group of tiles, the deepest zoom's first */
+    /** {@return every group of tiles, the deepest zoom's first} */
     public List<TileGroup> groups() {
         return groups;
     }
 
-    /** @return how many tiles the zoom levels' ranges hold, with data or not */
+    /** {@return how many tiles the zoom levels' ranges hold, with data or not} */
     public long tileCount() {
         long n = 0;
         for (Level level : levels) {
@@ -227,7 +227,7 @@ public final class TilePlan {
         return level;
     }
 
-    /** @return what an archive's header and metadata say about these tiles */
+    /** {@return what an archive's header and metadata say about these tiles} */
     public TileSink.TileSetInfo tileSetInfo() {
         String name = job.input().first().getFileName().toString();
         return new TileSink.TileSetInfo(name, "Shaded relief of " + name + " by jdem846", job.zooms(),

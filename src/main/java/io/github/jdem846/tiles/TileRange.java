@@ -57,20 +57,21 @@ public record TileRange(int z, int minX, int minY, int maxX, int maxY) {
         return new TileRange(z, minX, minY, Math.max(minX, maxX), Math.max(minY, maxY));
     }
 
-    /** @return columns × rows */
+    /** {@return columns × rows} */
     public long count() {
         return (long) (maxX - minX + 1) * (maxY - minY + 1);
     }
 
     /**
+     * {@return whether the tile is in this range}
+     *
      * @param t a tile of any zoom
-     * @return whether the tile is in this range
      */
     public boolean contains(WebMercatorTile t) {
         return t.z() == z && t.x() >= minX && t.x() <= maxX && t.y() >= minY && t.y() <= maxY;
     }
 
-    /** @return every tile, row by row from the north-west */
+    /** {@return every tile, row by row from the north-west} */
     public List<WebMercatorTile> tiles() {
         List<WebMercatorTile> out = new ArrayList<>((int) Math.min(Integer.MAX_VALUE - 8, count()));
         for (int y = minY; y <= maxY; y++) {

@@ -23,7 +23,7 @@ public record TileReport(Path output, TileFormat format, List<Zoom> zooms, long 
      */
     public record Zoom(int z, TileRange range, long written, int decimation) {
 
-        /** @return tiles of the range left out because no pixel of theirs holds data */
+        /** {@return tiles of the range left out because no pixel of theirs holds data} */
         public long empty() {
             return range.count() - written;
         }
@@ -41,12 +41,12 @@ public record TileReport(Path output, TileFormat format, List<Zoom> zooms, long 
         zooms = List.copyOf(zooms);
     }
 
-    /** @return tiles written at all zooms */
+    /** {@return tiles written at all zooms} */
     public long written() {
         return zooms.stream().mapToLong(Zoom::written).sum();
     }
 
-    /** @return tiles left out as empty at all zooms */
+    /** {@return tiles left out as empty at all zooms} */
     public long empty() {
         return zooms.stream().mapToLong(Zoom::empty).sum();
     }

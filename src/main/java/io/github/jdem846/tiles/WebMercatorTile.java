@@ -74,45 +74,46 @@ public record WebMercatorTile(int z, int x, int y) implements java.io.Serializab
     }
 
     /**
+     * {@return the size in Web Mercator metres of one pixel at zoom z (156 543.03… m at zoom 0)}
+     *
      * @param z zoom
-     * @return the size in Web Mercator metres of one pixel at zoom z (156 543.03… m at zoom 0)
      */
     public static double pixelSize(int z) {
         return 2 * WebMercator.HALF_WORLD / ((double) SIZE * (1L << checkZoom(z)));
     }
 
-    /** @return Web Mercator x of the west edge, metres */
+    /** {@return Web Mercator x of the west edge, metres} */
     public double westX() {
         return edgeX(x);
     }
 
-    /** @return Web Mercator x of the east edge, metres */
+    /** {@return Web Mercator x of the east edge, metres} */
     public double eastX() {
         return edgeX(x + 1);
     }
 
-    /** @return Web Mercator y of the north edge, metres */
+    /** {@return Web Mercator y of the north edge, metres} */
     public double northY() {
         return edgeY(y);
     }
 
-    /** @return Web Mercator y of the south edge, metres */
+    /** {@return Web Mercator y of the south edge, metres} */
     public double southY() {
         return edgeY(y + 1);
     }
 
-    /** @return the tile's edges in latitude and longitude, degrees */
+    /** {@return the tile's edges in latitude and longitude, degrees} */
     public LatLonBox latLonBounds() {
         return new LatLonBox(WebMercator.latitude(southY()), WebMercator.latitude(northY()),
                 WebMercator.longitude(westX()), WebMercator.longitude(eastX()));
     }
 
-    /** @return the row in the TMS scheme (counted from the south), as MBTiles stores it */
+    /** {@return the row in the TMS scheme (counted from the south), as MBTiles stores it} */
     public int tmsY() {
         return (1 << z) - 1 - y;
     }
 
-    /** @return the tile one zoom out that contains this one (itself at zoom 0) */
+    /** {@return the tile one zoom out that contains this one (itself at zoom 0)} */
     public WebMercatorTile parent() {
         return z == 0 ? this : new WebMercatorTile(z - 1, x >> 1, y >> 1);
     }

@@ -43,7 +43,7 @@ public record ZoomRange(int min, int max) {
         }
     }
 
-    /** @return how many levels */
+    /** {@return how many levels} */
     public int count() {
         return max - min + 1;
     }

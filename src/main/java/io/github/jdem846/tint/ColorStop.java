@@ -74,22 +74,22 @@ public record ColorStop(double level, StopUnit unit, int argb) {
         return Argb.of(red, green, blue, alpha);
     }
 
-    /** @return the red channel, 0 to 255 */
+    /** {@return the red channel, 0 to 255} */
     public int red() {
         return Argb.red(argb);
     }
 
-    /** @return the green channel, 0 to 255 */
+    /** {@return the green channel, 0 to 255} */
     public int green() {
         return Argb.green(argb);
     }
 
-    /** @return the blue channel, 0 to 255 */
+    /** {@return the blue channel, 0 to 255} */
     public int blue() {
         return Argb.blue(argb);
     }
 
-    /** @return the opacity, 0 (transparent) to 255 (opaque) */
+    /** {@return the opacity, 0 (transparent) to 255 (opaque)} */
     public int alpha() {
         return Argb.alpha(argb);
     }

@@ -73,12 +73,12 @@ public record StopRamp(String name, List<ColorStop> stops, ColorSelection select
         return new StopRamp(name, stops, selection, argb);
     }
 
-    /** @return true when every stop is a percent of the range */
+    /** {@return true when every stop is a percent of the range} */
     public boolean isRelative() {
         return stops.stream().allMatch(s -> s.unit() == StopUnit.PERCENT);
     }
 
-    /** @return true when every stop is an elevation, so that binding does not depend on the range */
+    /** {@return true when every stop is an elevation, so that binding does not depend on the range} */
     public boolean isAbsolute() {
         return stops.stream().allMatch(s -> s.unit() == StopUnit.ABSOLUTE);
     }

@@ -33,8 +33,9 @@ public record TopoBathyRamp(String name, StopRamp land, StopRamp sea) implements
     }
 
     /**
+     * {@return true when the range holds both land and sea (min &lt; 0 &lt; max), i.e. when the ramp splits at 0 m}
+     *
      * @param range the DEM's valid elevations
-     * @return true when the range holds both land and sea (min &lt; 0 &lt; max), i.e. when the ramp splits at 0 m
      */
     public static boolean holdsLandAndSea(ElevationStatistics range) {
         return !range.isEmpty() && range.min() < 0 && range.max() > 0;

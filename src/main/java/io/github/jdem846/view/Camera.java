@@ -105,7 +105,7 @@ public record Camera(double azimuthDegrees, double elevationDegrees, double dist
         return new Camera(azimuthDegrees, elevationDegrees, distanceMeters, fieldOfViewDegrees, w, h);
     }
 
-    /** @return true when the distance is chosen to fit the terrain */
+    /** {@return true when the distance is chosen to fit the terrain} */
     public boolean fits() {
         return distanceMeters == 0;
     }
