@@ -172,7 +172,7 @@ public final class Renderer {
      * NaN for no-data, computed tile by tile.
      *
      * @param dem the elevations
-     * @param stage the hillshade method and options that turn normals into illumination
+     * @param stage computes the illumination of a block of cells ({@link HillshadeMethod#stage})
      * @param light the light of each cell
      * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports
      * @return the illumination, row-major, one value per cell of {@code dem}
@@ -187,7 +187,7 @@ public final class Renderer {
      * The illumination of the cells of {@code area} only (row length {@code area.width()}).
      *
      * @param dem the elevations, the area and its halo
-     * @param stage the hillshade method and options that turn normals into illumination
+     * @param stage computes the illumination of a block of cells ({@link HillshadeMethod#stage})
      * @param light the light of each cell
      * @param area the cells to compute, inside {@code dem}
      * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports

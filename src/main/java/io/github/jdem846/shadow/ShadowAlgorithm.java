@@ -360,11 +360,11 @@ public enum ShadowAlgorithm {
      * just these cells, so the cost grows with {@code cells.length} (the accuracy study measures them on a random
      * sample of a large grid this way); {@code SWEEP} has no per-cell form and computes the whole grid first.
      *
-     * @param cells flat cell indices, {@code row · width + col}, each in [0, width · height)
      * @param dem the elevations
      * @param light where the light comes from, in the grid's frame
      * @param options step, sampling, soft shadows and curvature
      * @param pool the pool the work is split across
+     * @param cells flat cell indices, {@code row · width + col}, each in [0, width · height)
      * @return the shadowed fraction of each listed cell, in [0, 1], in the order of {@code cells}
      */
     public float[] computeCells(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,

@@ -29,12 +29,13 @@ public final class SunLightField implements LightField {
     /**
      * The sun over {@code grid} at {@code time}.
      *
-     * @param place    where to compute the sun when the grid's CRS cannot give latitude/longitude, or {@code null}
-     * @param tileSize cells per tile edge for a sun per tile; 0 for one sun at the grid's centre
-     * @param grid the grid the light falls on; its CRS gives the latitude and longitude of its cells when it can
+     * @param grid the grid the light falls on; without {@code place}, its CRS places the cells on the globe
      * @param time the instant, in any zone
+     * @param place    where to compute one sun for the whole grid, or {@code null} to place the cells by the CRS
+     * @param tileSize cells per tile edge for a sun per tile; 0 for one sun at the grid's centre
      * @param observer height, air and ΔT of the observer
-     * @return one sun, or one per tile, turned into the grid's frame
+     * @return one sun seen from {@code place}, or the suns of the grid's cells (one, or one per tile) turned into
+     *     the grid's frame
      * @throws IllegalArgumentException when neither the CRS nor {@code place} gives a position (the message says to
      *                                  pass {@code --sun-at LAT,LON})
      */

@@ -147,9 +147,9 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * does not exist yet or is empty. Everything is written to a hidden file or directory beside it first and
      * renamed into place at the end; a failure or an interrupt leaves nothing.
      *
+     * @param output the {@code .pmtiles} file or the directory
      * @param listener told of progress ("statistics": rows of the DEM streamed for its range, then "tiles": tiles
      *                 done, of all), notices and the sun computed
-     * @param output the {@code .pmtiles} file or the directory
      * @return what was written
      * @throws IOException              when the DEM cannot be read or the output not written (naming the file)
      * @throws IllegalArgumentException when the settings do not make sense for map tiles (a sun per tile, a fixed

@@ -73,9 +73,9 @@ public final class TilePlan {
      * Reads the DEM's headers and measures its elevation range (one pass over its cells): for the process that
      * hands out the groups.
      *
+     * @param job the tile job
      * @param listener told of the DEM's notices, the rows of the file streamed for its range (stage "statistics"),
      *                 the sun computed and the end of the "read" phase
-     * @param job the tile job
      * @return the plan
      * @throws IOException              when the DEM cannot be read or holds no elevations (naming it)
      * @throws IllegalArgumentException when the job's settings do not make sense for map tiles ({@link
@@ -237,10 +237,10 @@ public final class TilePlan {
     /**
      * The report of a finished run.
      *
-     * @param writtenByZoom tiles written at each zoom (a zoom left out wrote none)
-     * @param bytes         PNG bytes written
      * @param output where the tiles were written
      * @param format the format they were written in
+     * @param writtenByZoom tiles written at each zoom (a zoom left out wrote none)
+     * @param bytes         PNG bytes written
      * @return the report
      */
     public TileReport report(Path output, TileFormat format, Map<Integer, Long> writtenByZoom, long bytes) {
