@@ -43,6 +43,20 @@ public record CrsInfo(String name, Integer epsg, Kind kind, double linearUnitMet
      */
     public static final CrsInfo WGS84 = geographic("WGS 84", 4326, Ellipsoid.WGS84);
 
+    /**
+     * Checks that the kind is given and that a projected CRS has a positive linear unit.
+     *
+     * @param name a human-readable name, or {@code null} when unknown
+     * @param epsg the EPSG code, or {@code null}
+     * @param kind geographic (axes in degrees), projected (axes in a linear unit) or unknown
+     * @param linearUnitMeters metres per axis unit for projected CRSs (1, 0.3048, 1200/3937); NaN otherwise
+     * @param ellipsoid the ellipsoid, or {@code null} when unknown (geographic grids then use WGS 84)
+     * @param sisCrs the Apache SIS CRS, or {@code null} when it could not be resolved or was not needed (a GeoTIFF's
+     *     lat/lon CRS read from its GeoKeys alone, a UTM zone known by its EPSG code ({@link UtmZone}), an implied WGS
+     *     84: {@link CrsResolver#complete} resolves it from the EPSG code)
+     * @param assumed true when nothing in the file named the CRS and it was inferred (e.g. degrees from the extent);
+     *     the CLI reports this
+     */
     public CrsInfo {
         Objects.requireNonNull(kind, "kind");
         if (kind == Kind.PROJECTED && !(linearUnitMeters > 0)) {
@@ -50,32 +64,51 @@ public record CrsInfo(String name, Integer epsg, Kind kind, double linearUnitMet
         }
     }
 
-    /** A geographic CRS on the given ellipsoid (WGS 84 when {@code null}), with no SIS object. */
+    /**
+     * A geographic CRS on the given ellipsoid (WGS 84 when {@code null}), with no SIS object.
+     *
+     * @param name a human-readable name, or {@code null} when unknown
+     * @param epsg the EPSG code, or {@code null}
+     * @param ellipsoid the ellipsoid, or {@code null} for WGS 84
+     * @return a geographic CRS, not assumed
+     */
     public static CrsInfo geographic(String name, Integer epsg, Ellipsoid ellipsoid) {
         return new CrsInfo(name, epsg, Kind.GEOGRAPHIC, Double.NaN, ellipsoid, null, false);
     }
 
-    /** A projected CRS in a unit of the given length in metres, with no SIS object. */
+    /**
+     * A projected CRS in a unit of the given length in metres, with no SIS object.
+     *
+     * @param name a human-readable name, or {@code null} when unknown
+     * @param epsg the EPSG code, or {@code null}
+     * @param linearUnitMeters metres per axis unit, positive (0.3048 for the international foot)
+     * @param ellipsoid the ellipsoid, or {@code null} when unknown
+     * @return a projected CRS, not assumed
+     */
     public static CrsInfo projected(String name, Integer epsg, double linearUnitMeters, Ellipsoid ellipsoid) {
         return new CrsInfo(name, epsg, Kind.PROJECTED, linearUnitMeters, ellipsoid, null, false);
     }
 
-    /** @return the same CRS flagged as inferred rather than read from the file */
+    /** {@return the same CRS flagged as inferred rather than read from the file} */
     public CrsInfo asAssumed() {
         return new CrsInfo(name, epsg, kind, linearUnitMeters, ellipsoid, sisCrs, true);
     }
 
-    /** @return the ellipsoid to use for metric sizes: the CRS's own, or WGS 84 when it names none */
+    /** {@return the ellipsoid to use for metric sizes: the CRS's own, or WGS 84 when it names none} */
     public Ellipsoid ellipsoidOrWgs84() {
         return ellipsoid != null ? ellipsoid : Ellipsoid.WGS84;
     }
 
-    /** @return true when the axes are degrees of longitude and latitude */
+    /** {@return true when the axes are degrees of longitude and latitude} */
     public boolean isGeographic() {
         return kind == Kind.GEOGRAPHIC;
     }
 
-    /** The Apache SIS CRS when one was resolved ({@link CrsResolver#complete} resolves one from the EPSG code). */
+    /**
+     * The Apache SIS CRS when one was resolved ({@link CrsResolver#complete} resolves one from the EPSG code).
+     *
+     * @return the SIS CRS, or empty
+     */
     public Optional<CoordinateReferenceSystem> sis() {
         return Optional.ofNullable(sisCrs);
     }

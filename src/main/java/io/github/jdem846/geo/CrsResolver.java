@@ -44,7 +44,12 @@ public final class CrsResolver {
     private CrsResolver() {
     }
 
-    /** The CRS of an EPSG code, when Apache SIS can build it offline. */
+    /**
+     * The CRS of an EPSG code, when Apache SIS can build it offline.
+     *
+     * @param code the EPSG code, e.g. 4326 or 32632
+     * @return the CRS, or empty when SIS cannot build the code offline
+     */
     public static Optional<CrsInfo> fromEpsg(int code) {
         if (code <= 0 || code >= 32767) {
             return Optional.empty();
@@ -61,6 +66,9 @@ public final class CrsResolver {
      * (a GeoTIFF's geographic CRS is read from its GeoKeys without starting SIS); {@code crs} itself when SIS
      * already resolved it, when it has no code, or when SIS does not know the code offline or gives another kind.
      * The "assumed" flag is kept.
+     *
+     * @param crs the CRS as a reader described it
+     * @return the completed CRS, or {@code crs} itself
      */
     public static CrsInfo complete(CrsInfo crs) {
         if (crs.sisCrs() != null || crs.epsg() == null) {
@@ -75,6 +83,8 @@ public final class CrsResolver {
      * ETRS89 and their UTM zones are recognised without Apache SIS and known by their EPSG code (SIS's definition
      * follows from {@link #complete} where needed); everything else is parsed by SIS.
      *
+     * @param wkt the WKT text
+     * @return the CRS it describes
      * @throws IllegalArgumentException when the text is not a CRS Apache SIS can parse; the message says why
      */
     public static CrsInfo fromWkt(String wkt) {
@@ -102,6 +112,7 @@ public final class CrsResolver {
      *
      * @param crs  the CRS
      * @param epsg the code it was created from, or {@code null} to take it from the CRS's identifiers
+     * @return the description, with {@code crs} as its SIS object
      */
     public static CrsInfo fromSis(CoordinateReferenceSystem crs, Integer epsg) {
         SingleCRS horizontal = CRS.getHorizontalComponent(crs);
@@ -126,6 +137,9 @@ public final class CrsResolver {
     /**
      * Metres per unit for an EPSG unit-of-measure code (9001 metre, 9002 foot, 9003 US survey foot, …), or NaN
      * when the code is unknown or not a length.
+     *
+     * @param epsgUnitCode the EPSG code of a unit of measure
+     * @return metres per unit, or NaN
      */
     public static double linearUnitMetres(int epsgUnitCode) {
         Unit<?> unit = null;
@@ -137,7 +151,12 @@ public final class CrsResolver {
         return unit != null ? metresPerUnit(unit) : Double.NaN;
     }
 
-    /** The name of an EPSG unit-of-measure code ("metre", "US survey foot"), or "EPSG unit {@literal <code>}". */
+    /**
+     * The name of an EPSG unit-of-measure code ("metre", "US survey foot"), or "EPSG unit {@literal <code>}".
+     *
+     * @param epsgUnitCode the EPSG code of a unit of measure
+     * @return the unit's name
+     */
     public static String linearUnitName(int epsgUnitCode) {
         return switch (epsgUnitCode) {
             case 9001 -> "metre";
@@ -151,6 +170,9 @@ public final class CrsResolver {
     /**
      * The ellipsoid of an EPSG ellipsoid code (7030 WGS 84, 7019 GRS 1980, 7008 Clarke 1866, …) among those
      * Apache SIS knows offline.
+     *
+     * @param code the EPSG code of an ellipsoid
+     * @return the ellipsoid, or empty when the code is unknown offline or not an ellipsoid
      */
     public static Optional<Ellipsoid> ellipsoidFromEpsg(int code) {
         for (CommonCRS c : CommonCRS.values()) {
@@ -162,7 +184,12 @@ public final class CrsResolver {
         return Optional.empty();
     }
 
-    /** The ellipsoid of an EPSG geodetic datum code (6326 WGS 84, 6269 NAD83, 6267 NAD27, …) known offline. */
+    /**
+     * The ellipsoid of an EPSG geodetic datum code (6326 WGS 84, 6269 NAD83, 6267 NAD27, …) known offline.
+     *
+     * @param code the EPSG code of a geodetic datum
+     * @return the datum's ellipsoid, or empty when the code is unknown offline or not a geodetic datum
+     */
     public static Optional<Ellipsoid> ellipsoidOfDatumEpsg(int code) {
         for (CommonCRS c : CommonCRS.values()) {
             GeodeticDatum d = c.datum(false);

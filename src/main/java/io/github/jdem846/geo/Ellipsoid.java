@@ -19,6 +19,13 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
     /** Mars as a sphere of IAU mean radius 3389.5 km. */
     public static final Ellipsoid MARS = sphere("Mars", 3389500.0);
 
+    /**
+     * Checks the axis and the flattening; an inverse flattening of 0 is taken as infinite (a sphere).
+     *
+     * @param name a human-readable name, e.g. "WGS 84"
+     * @param semiMajorAxis equatorial radius a, in metres; positive and finite
+     * @param inverseFlattening 1/f; {@code Double.POSITIVE_INFINITY} (or 0, as EPSG writes it) for a sphere
+     */
     public Ellipsoid {
         if (!(semiMajorAxis > 0) || Double.isInfinite(semiMajorAxis)) {
             throw new IllegalArgumentException("semi-major axis must be positive and finite: " + semiMajorAxis);
@@ -31,28 +38,34 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
         }
     }
 
-    /** A sphere of the given radius in metres. */
+    /**
+     * A sphere of the given radius in metres.
+     *
+     * @param name the name for messages
+     * @param radius the radius in metres, positive and finite
+     * @return an ellipsoid of infinite inverse flattening
+     */
     public static Ellipsoid sphere(String name, double radius) {
         return new Ellipsoid(name, radius, Double.POSITIVE_INFINITY);
     }
 
-    /** @return the flattening f = (a − b)/a; 0 for a sphere */
+    /** {@return the flattening f = (a − b)/a; 0 for a sphere} */
     public double flattening() {
         return Double.isInfinite(inverseFlattening) ? 0 : 1 / inverseFlattening;
     }
 
-    /** @return the first eccentricity squared e² = f(2 − f) */
+    /** {@return the first eccentricity squared e² = f(2 − f)} */
     public double eccentricitySquared() {
         double f = flattening();
         return f * (2 - f);
     }
 
-    /** @return the polar radius b, in metres */
+    /** {@return the polar radius b, in metres} */
     public double semiMinorAxis() {
         return semiMajorAxis * (1 - flattening());
     }
 
-    /** @return the mean radius (2a + b)/3, in metres (IUGG R1) */
+    /** {@return the mean radius (2a + b)/3, in metres (IUGG R1)} */
     public double meanRadius() {
         return (2 * semiMajorAxis + semiMinorAxis()) / 3;
     }
@@ -60,13 +73,21 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
     /**
      * Radius of curvature in the prime vertical, N(φ) = a/√(1 − e² sin²φ), in metres. The length of one radian
      * of longitude along the parallel at φ is N(φ)·cos φ.
+     *
+     * @param latitudeRadians the geodetic latitude φ in radians
+     * @return N(φ) in metres
      */
     public double primeVerticalRadius(double latitudeRadians) {
         double s = Math.sin(latitudeRadians);
         return semiMajorAxis / Math.sqrt(1 - eccentricitySquared() * s * s);
     }
 
-    /** Radius of curvature in the meridian, M(φ) = a(1 − e²)/(1 − e² sin²φ)^1.5, in metres. */
+    /**
+     * Radius of curvature in the meridian, M(φ) = a(1 − e²)/(1 − e² sin²φ)^1.5, in metres.
+     *
+     * @param latitudeRadians the geodetic latitude φ in radians
+     * @return M(φ) in metres
+     */
     public double meridionalRadius(double latitudeRadians) {
         double e2 = eccentricitySquared();
         double s = Math.sin(latitudeRadians);
@@ -77,6 +98,10 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
     /**
      * Length in metres of an arc of longitude {@code deltaLonDegrees} along the parallel at
      * {@code latitudeDegrees}. Exactly 0 at the poles (cos 90° is clamped so no negative length appears).
+     *
+     * @param latitudeDegrees the parallel's geodetic latitude in degrees
+     * @param deltaLonDegrees the arc's extent in degrees of longitude, either sign
+     * @return the length in metres, ≥ 0
      */
     public double parallelArcLength(double latitudeDegrees, double deltaLonDegrees) {
         double phi = Math.toRadians(clampLatitude(latitudeDegrees));
@@ -87,6 +112,10 @@ public record Ellipsoid(String name, double semiMajorAxis, double inverseFlatten
     /**
      * Length in metres of the meridian arc between two latitudes (degrees), by Simpson's rule on M(φ), which is
      * exact to well under a millimetre for any DEM cell.
+     *
+     * @param latitude1Degrees one end's geodetic latitude
+     * @param latitude2Degrees the other end's geodetic latitude
+     * @return the length in metres, ≥ 0, in either order
      */
     public double meridianArcLength(double latitude1Degrees, double latitude2Degrees) {
         double p1 = Math.toRadians(clampLatitude(latitude1Degrees));

@@ -40,6 +40,9 @@ public final class GeoLocator {
     /**
      * A locator for the CRS, or empty when positions cannot be turned into latitude/longitude (unknown CRS, or a
      * projected CRS Apache SIS could not resolve offline, e.g. one known only from GeoKeys).
+     *
+     * @param crs the grid's CRS
+     * @return the locator, or empty
      */
     public static Optional<GeoLocator> forCrs(CrsInfo crs) {
         Objects.requireNonNull(crs, "crs");
@@ -65,6 +68,9 @@ public final class GeoLocator {
     /**
      * Latitude and longitude of world position ({@code x}, {@code y}) in the CRS's units.
      *
+     * @param x easting or longitude, in the CRS's units
+     * @param y northing or latitude, in the CRS's units
+     * @return the position in degrees
      * @throws IllegalArgumentException when the position is outside the projection's domain
      */
     public LatLon toLatLon(double x, double y) {
@@ -127,6 +133,12 @@ public final class GeoLocator {
      * The latitude/longitude box of the world rectangle [{@code west}, {@code east}] × [{@code south},
      * {@code north}], following each edge at {@value #EDGE_SAMPLES} points (a projected rectangle's edges are
      * curves in latitude/longitude).
+     *
+     * @param west the rectangle's west edge, in the CRS's units
+     * @param south the rectangle's south edge, in the CRS's units
+     * @param east the rectangle's east edge, in the CRS's units
+     * @param north the rectangle's north edge, in the CRS's units
+     * @return the smallest latitude/longitude box holding the sampled edges
      */
     public LatLonBox extent(double west, double south, double east, double north) {
         if (toLonLat == null) {

@@ -15,6 +15,10 @@ public record LatLon(double latitude, double longitude) {
     /**
      * A place for date-and-time sun positions: latitude in [−90, 90] and longitude in [−180, 180], with a message
      * for a person otherwise.
+     *
+     * @param latitude degrees north
+     * @param longitude degrees east
+     * @return the place
      */
     public static LatLon validated(double latitude, double longitude) {
         if (!(latitude >= -90 && latitude <= 90)) {
@@ -30,6 +34,8 @@ public record LatLon(double latitude, double longitude) {
     /**
      * Parses {@code "LAT,LON"} in decimal degrees, e.g. {@code "49.61,6.13"} or {@code "-33.92, 18.42"}.
      *
+     * @param text the text, e.g. {@code "49.61,6.13"}
+     * @return the place, validated as by {@link #validated}
      * @throws IllegalArgumentException with a message naming the problem and the expected form
      */
     public static LatLon parse(String text) {
@@ -60,7 +66,12 @@ public record LatLon(double latitude, double longitude) {
         }
     }
 
-    /** {@code longitude} reduced into [−180, 180). */
+    /**
+     * {@code longitude} reduced into [−180, 180).
+     *
+     * @param longitude degrees east, finite
+     * @return the same meridian in [−180, 180)
+     */
     public static double wrapLongitude(double longitude) {
         double l = (longitude + 180) % 360;
         if (l < 0) {

@@ -27,7 +27,12 @@ public record UtmZone(int epsg, String datum, int zone, boolean south, Ellipsoid
     private static final Ellipsoid WGS_1984 = new Ellipsoid("WGS 1984", 6378137.0, 298.257223563);
     private static final Ellipsoid GRS_1980 = new Ellipsoid("GRS 1980", 6378137.0, 298.257222101);
 
-    /** The zone of an EPSG code of the families above, or empty for any other code. */
+    /**
+     * The zone of an EPSG code of the families above, or empty for any other code.
+     *
+     * @param code an EPSG code
+     * @return the zone, or empty
+     */
     public static Optional<UtmZone> ofEpsg(int code) {
         if (code >= 32601 && code <= 32660) {
             return Optional.of(new UtmZone(code, "WGS 84", code - 32600, false, WGS_1984));
@@ -44,17 +49,17 @@ public record UtmZone(int epsg, String datum, int zone, boolean south, Ellipsoid
         return Optional.empty();
     }
 
-    /** @return the CRS's EPSG name, e.g. "WGS 84 / UTM zone 11N" */
+    /** {@return the CRS's EPSG name, e.g. "WGS 84 / UTM zone 11N"} */
     public String name() {
         return datum + " / UTM zone " + zone + (south ? "S" : "N");
     }
 
-    /** @return the longitude of the zone's central meridian, degrees */
+    /** {@return the longitude of the zone's central meridian, degrees} */
     public double centralMeridian() {
         return -183.0 + 6.0 * zone;
     }
 
-    /** @return the CRS as a reader describes it: projected, in metres, on the datum's ellipsoid, no SIS object yet */
+    /** {@return the CRS as a reader describes it: projected, in metres, on the datum's ellipsoid, no SIS object yet} */
     public CrsInfo crsInfo() {
         return CrsInfo.projected(name(), epsg, 1.0, ellipsoid);
     }
@@ -64,6 +69,9 @@ public record UtmZone(int epsg, String datum, int zone, boolean south, Ellipsoid
      * x the distance from the central meridian (easting − 500 000 m), R the ellipsoid's mean radius. It differs
      * from the ellipsoidal scale by about e²·(k − 1), i.e. less than 1 % of the departure from 1 (a few 10⁻⁵ within
      * a zone); enough to tell that a grid needs no scale notice, not to print one.
+     *
+     * @param easting the easting in metres, false easting included
+     * @return the approximate scale factor, k₀ on the central meridian and growing away from it
      */
     public double scaleFactorAt(double easting) {
         double x = easting - FALSE_EASTING;

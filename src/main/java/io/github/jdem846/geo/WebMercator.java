@@ -33,31 +33,49 @@ public final class WebMercator {
     private WebMercator() {
     }
 
-    /** @return x in metres of {@code longitude} degrees (not wrapped: 180° gives HALF_WORLD) */
+    /**
+     * {@return x in metres of {@code longitude} degrees (not wrapped: 180° gives HALF_WORLD)}
+     *
+     * @param longitude degrees east
+     */
     public static double x(double longitude) {
         return RADIUS * Math.toRadians(longitude);
     }
 
     /**
-     * @return y in metres of {@code latitude} degrees, the latitude clamped to ±{@link #MAX_LATITUDE} first (so
-     * the poles map to the edges of the world, not to infinity)
+     * {@return y in metres of {@code latitude} degrees, the latitude clamped to ±{@link #MAX_LATITUDE} first (so the
+     * poles map to the edges of the world, not to infinity)}
+     *
+     * @param latitude degrees north
      */
     public static double y(double latitude) {
         double phi = Math.toRadians(Math.max(-MAX_LATITUDE, Math.min(MAX_LATITUDE, latitude)));
         return RADIUS * Math.log(Math.tan(Math.PI / 4 + phi / 2));
     }
 
-    /** @return the longitude in degrees of {@code x} metres (not wrapped) */
+    /**
+     * {@return the longitude in degrees of {@code x} metres (not wrapped)}
+     *
+     * @param x metres east of the central meridian
+     */
     public static double longitude(double x) {
         return Math.toDegrees(x / RADIUS);
     }
 
-    /** @return the latitude in degrees of {@code y} metres: atan(sinh(y/R)) */
+    /**
+     * {@return the latitude in degrees of {@code y} metres: atan(sinh(y/R))}
+     *
+     * @param y metres north of the equator
+     */
     public static double latitude(double y) {
         return Math.toDegrees(Math.atan(Math.sinh(y / RADIUS)));
     }
 
-    /** @return the degrees of longitude that {@code dx} metres of x span */
+    /**
+     * {@return the degrees of longitude that {@code dx} metres of x span}
+     *
+     * @param dx a distance along x in metres
+     */
     public static double longitudeSpan(double dx) {
         return Math.toDegrees(dx / RADIUS);
     }
@@ -68,6 +86,9 @@ public final class WebMercator {
      * "Popular Visualisation Pseudo Mercator" method, or ESRI's {@code Mercator_Auxiliary_Sphere} with
      * {@code Auxiliary_Sphere_Type} 0 (what GDAL writes in an ESRI {@code .prj} for EPSG:3857), every other
      * parameter 0, on an ellipsoid of semi-major axis {@value #RADIUS} m.
+     *
+     * @param crs the CRS, not null
+     * @return whether it is Web Mercator
      */
     public static boolean isWebMercator(CrsInfo crs) {
         if (crs.kind() != CrsInfo.Kind.PROJECTED || crs.linearUnitMeters() != 1.0) {

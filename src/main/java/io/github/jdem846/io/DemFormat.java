@@ -29,7 +29,7 @@ public enum DemFormat {
         this.displayName = displayName;
     }
 
-    /** @return the name shown to people, e.g. "ESRI GridFloat" */
+    /** {@return the name shown to people, e.g. "ESRI GridFloat"} */
     public String displayName() {
         return displayName;
     }

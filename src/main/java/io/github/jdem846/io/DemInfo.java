@@ -23,6 +23,20 @@ import java.util.Objects;
 public record DemInfo(String source, DemFormat format, SampleType dataType, int bands, GridGeometry geometry,
                       Double declaredNoData, List<String> notices, List<java.nio.file.Path> members) {
 
+    /**
+     * Checks that source, format, data type and geometry are given, and copies the lists.
+     *
+     * @param source the file (or the bundled sample's name; for a mosaic, the {@code .vrt} or a short list of the
+     *     files)
+     * @param format the file format
+     * @param dataType how elevations are stored
+     * @param bands number of bands in the file (band 1 is read)
+     * @param geometry grid size, georeferencing (outer-corner form) and CRS
+     * @param declaredNoData the no-data value the file declares; {@code null} when it declares none, NaN when it
+     *     declares NaN
+     * @param notices things a person should know (assumptions, ignored bands, unresolved CRS codes)
+     * @param members the files of a mosaic, in the order they are read (the data file of each); empty for one file
+     */
     public DemInfo {
         Objects.requireNonNull(source, "source");
         Objects.requireNonNull(format, "format");
@@ -32,13 +46,25 @@ public record DemInfo(String source, DemFormat format, SampleType dataType, int 
         members = List.copyOf(members);
     }
 
-    /** The header of one file (no members). */
+    /**
+     * The header of one file (no members).
+     *
+     * @param source the file (or the bundled sample's name; for a mosaic, the {@code .vrt} or a short list of the
+     *     files)
+     * @param format the file format
+     * @param dataType how elevations are stored
+     * @param bands number of bands in the file (band 1 is read)
+     * @param geometry grid size, georeferencing (outer-corner form) and CRS
+     * @param declaredNoData the no-data value the file declares; {@code null} when it declares none, NaN when it
+     *     declares NaN
+     * @param notices things a person should know (assumptions, ignored bands, unresolved CRS codes)
+     */
     public DemInfo(String source, DemFormat format, SampleType dataType, int bands, GridGeometry geometry,
                    Double declaredNoData, List<String> notices) {
         this(source, format, dataType, bands, geometry, declaredNoData, notices, List.of());
     }
 
-    /** @return true when this describes several files read as one grid */
+    /** {@return true when this describes several files read as one grid} */
     public boolean isMosaic() {
         return !members.isEmpty();
     }
@@ -63,12 +89,12 @@ public record DemInfo(String source, DemFormat format, SampleType dataType, int 
         return new DemInfo(source, format, dataType, bands, newGeometry, declaredNoData, notices, members);
     }
 
-    /** @return columns */
+    /** {@return columns} */
     public int width() {
         return geometry.width();
     }
 
-    /** @return rows */
+    /** {@return rows} */
     public int height() {
         return geometry.height();
     }
@@ -84,7 +110,7 @@ public record DemInfo(String source, DemFormat format, SampleType dataType, int 
         return g == geometry ? this : withGeometry(g);
     }
 
-    /** @return the declared no-data value as {@link io.github.jdem846.raster.Dem} takes it: NaN when none */
+    /** {@return the declared no-data value as {@link io.github.jdem846.raster.Dem} takes it: NaN when none} */
     public double noDataOrNaN() {
         return declaredNoData != null ? declaredNoData : Double.NaN;
     }

@@ -13,6 +13,11 @@ import java.util.Objects;
  */
 public record DemInput(List<Path> files) {
 
+    /**
+     * Copies the list of files and checks that it holds at least one.
+     *
+     * @param files the DEM files, at least one; a {@code .hdr} stands for its data file
+     */
     public DemInput {
         files = List.copyOf(Objects.requireNonNull(files, "files"));
         if (files.isEmpty()) {
@@ -40,12 +45,12 @@ public record DemInput(List<Path> files) {
         return new DemInput(files);
     }
 
-    /** @return true when this is one file */
+    /** {@return true when this is one file} */
     public boolean isSingleFile() {
         return files.size() == 1;
     }
 
-    /** @return the first file (the only one of a single-file input) */
+    /** {@return the first file (the only one of a single-file input)} */
     public Path first() {
         return files.get(0);
     }

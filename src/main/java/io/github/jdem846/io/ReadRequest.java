@@ -18,6 +18,15 @@ public record ReadRequest(Window window, int decimation, long memoryLimit) {
     /** The whole grid at full resolution. */
     public static final ReadRequest FULL = new ReadRequest(null, 1);
 
+    /**
+     * Checks that the decimation is ≥ 1 and the memory limit ≥ 0.
+     *
+     * @param window the part to read, or {@code null} for the whole grid
+     * @param decimation block size ≥ 1 (1 = every cell)
+     * @param memoryLimit most heap bytes the read may take: the grid plus the working buffers (row bands and the strips
+     *     or tiles decoded at once); a read that would need more is refused before it allocates, as one that does not
+     *     fit in the heap always is. {@link Long#MAX_VALUE}: the heap is the limit
+     */
     public ReadRequest {
         if (decimation < 1) {
             throw new IllegalArgumentException("decimation must be a whole number ≥ 1, got " + decimation);

@@ -29,12 +29,12 @@ public enum SampleType {
         this.bytes = bytes;
     }
 
-    /** @return GDAL's name of the type, e.g. "Int16", "Float32" */
+    /** {@return GDAL's name of the type, e.g. "Int16", "Float32"} */
     public String displayName() {
         return displayName;
     }
 
-    /** @return bytes per sample (0 for text) */
+    /** {@return bytes per sample (0 for text)} */
     public int bytes() {
         return bytes;
     }

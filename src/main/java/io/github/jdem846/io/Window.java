@@ -54,6 +54,14 @@ public sealed interface Window permits Window.Cells, Window.World {
      * @param height rows, ≥ 1
      */
     record Cells(int col, int row, int width, int height) implements Window {
+        /**
+         * Checks that the first cell is at or after (0, 0) and the window at least one cell.
+         *
+         * @param col first column, ≥ 0
+         * @param row first row (north), ≥ 0
+         * @param width columns, ≥ 1
+         * @param height rows, ≥ 1
+         */
         public Cells {
             if (col < 0 || row < 0 || width < 1 || height < 1) {
                 throw new IllegalArgumentException("a cell window needs col, row ≥ 0 and width, height ≥ 1, got "
@@ -81,6 +89,14 @@ public sealed interface Window permits Window.Cells, Window.World {
      * @param north maximum y
      */
     record World(double west, double south, double east, double north) implements Window {
+        /**
+         * Checks that the edges are finite with west &lt; east and south &lt; north.
+         *
+         * @param west minimum x
+         * @param south minimum y
+         * @param east maximum x
+         * @param north maximum y
+         */
         public World {
             if (!(west < east) || !(south < north) || !Double.isFinite(west) || !Double.isFinite(east)
                     || !Double.isFinite(south) || !Double.isFinite(north)) {

@@ -13,6 +13,7 @@ public final class InsufficientHeapException extends RuntimeException {
 
     private static final long serialVersionUID = 1L;
 
+    /** Whether the message already says what would make the picture fit. */
     private final boolean advises;
 
     private InsufficientHeapException(String message) {
@@ -24,7 +25,7 @@ public final class InsufficientHeapException extends RuntimeException {
         this.advises = advises;
     }
 
-    /** @return true when the message already says what would make the picture fit */
+    /** {@return true when the message already says what would make the picture fit} */
     public boolean givesAdvice() {
         return advises;
     }

@@ -72,6 +72,26 @@ import java.util.Objects;
 public record ReliefJob(DemInput input, Product product, Scene scene, Window window, OutputSize size, Sun sun,
                         Body body, MercatorScale mercatorScale, RenderSettings execution, long memory) {
 
+    /**
+     * Checks that the parts are given and that the memory budget is ≥ 0.
+     *
+     * @param input the DEM file (GeoTIFF, GridFloat, ESRI ASCII, BIL, SRTM HGT) or files read as one grid, or {@code
+     *     null} for a job that only renders grids already in memory ({@link #run(Dem, JobListener)})
+     * @param product what to make
+     * @param scene the stages and their settings; its light is replaced by {@code sun}'s. For {@link Product#HILLSHADE}
+     *     only its hillshade method and options count, for {@link Product#TINT} only its tint, for {@link
+     *     Product#SHADOWS} only its shadow algorithm and options (not NONE)
+     * @param window the part of the DEM to draw, or {@code null} for all of it
+     * @param size the picture's size ({@link OutputSize#FULL}: one pixel per cell); stages run at that resolution
+     * @param sun the light
+     * @param body the body a DEM whose file names no ellipsoid lies on (metric cell sizes, the sun by date and time)
+     * @param mercatorScale how the cells of a Web Mercator DEM are measured for slopes and shadow lengths: on the
+     *     ground row by row ({@link MercatorScale#GROUND}, the default) or in the projection's metres
+     * @param execution threads, tile size and optionally a shared pool; the result does not depend on them
+     * @param memory the most heap bytes the job's grids, layers and pictures may take at once, or 0 for half the heap's
+     *     maximum ({@link #memoryBudget()}): {@link #runAndWrite} renders a picture that needs more in tiles
+     *     (docs/scale.md); the result does not depend on it
+     */
     public ReliefJob {
         Objects.requireNonNull(product, "product");
         Objects.requireNonNull(scene, "scene");

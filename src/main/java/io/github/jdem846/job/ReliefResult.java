@@ -29,6 +29,18 @@ import java.util.Objects;
 public record ReliefResult(ReliefJob job, DemInfo source, GridGeometry geometry, int[] argb, byte[] gray,
                            SunPosition sun) {
 
+    /**
+     * Checks that the job and geometry are given and that the result holds either RGBA or gray pixels.
+     *
+     * @param job the job that made it
+     * @param source the header of the DEM read, or {@code null} for a grid rendered from memory
+     * @param geometry the grid the pixels cover (for world files and GeoTIFF tags)
+     * @param argb non-premultiplied 0xAARRGGBB pixels, no-data transparent; {@code null} for a gray product. Owned by
+     *     this record: do not modify
+     * @param gray 0..255 samples (hillshade: 0 = no-data); {@code null} for an RGBA product. Owned by this record: do
+     *     not modify
+     * @param sun the sun by date and time at the centre of the picture, or {@code null} for a fixed light
+     */
     public ReliefResult {
         Objects.requireNonNull(job, "job");
         Objects.requireNonNull(geometry, "geometry");
@@ -45,12 +57,12 @@ public record ReliefResult(ReliefJob job, DemInfo source, GridGeometry geometry,
         return new ReliefResult(job, source, geometry, null, Objects.requireNonNull(gray, "gray"), sun);
     }
 
-    /** @return pixels across */
+    /** {@return pixels across} */
     public int width() {
         return geometry.width();
     }
 
-    /** @return pixels down */
+    /** {@return pixels down} */
     public int height() {
         return geometry.height();
     }

@@ -25,6 +25,16 @@ public record Sun(LightDirection direction, ZonedDateTime time, LatLon place, bo
     /** The original's light: azimuth 320°, elevation 25°. */
     public static final Sun ORIGINAL_DEFAULT = fixed(LightDirection.ORIGINAL_DEFAULT);
 
+    /**
+     * Checks that exactly one of direction and time is given, and that a place, a sun per tile and the twilight fade
+     * come with a time.
+     *
+     * @param direction the fixed light, or {@code null} when the sun is given by {@code time}
+     * @param time the instant, or {@code null} for a fixed light
+     * @param place with a time: where to compute the sun when the DEM's CRS cannot say, or {@code null}
+     * @param perTile with a time: a sun for every tile from its own latitude/longitude
+     * @param twilight with a time: darken the scene from zenith 90° to 108° (the original's twilight fade)
+     */
     public Sun {
         if ((direction == null) == (time == null)) {
             throw new IllegalArgumentException("give either a fixed light direction or a date and time, not both");
@@ -95,7 +105,7 @@ public record Sun(LightDirection direction, ZonedDateTime time, LatLon place, bo
         return new Sun(direction, time, place, perTile, value);
     }
 
-    /** @return true when the sun is given by date and time */
+    /** {@return true when the sun is given by date and time} */
     public boolean byTime() {
         return time != null;
     }

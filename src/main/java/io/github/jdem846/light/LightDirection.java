@@ -18,6 +18,12 @@ public record LightDirection(double azimuthDegrees, double elevationDegrees) {
     /** The original jDem846's default light: azimuth 320°, elevation 25°. */
     public static final LightDirection ORIGINAL_DEFAULT = new LightDirection(320, 25);
 
+    /**
+     * Checks the ranges and brings the azimuth into [0, 360).
+     *
+     * @param azimuthDegrees clockwise from north, normalised into [0, 360)
+     * @param elevationDegrees above the horizon, in [−90, 90]
+     */
     public LightDirection {
         if (!Double.isFinite(azimuthDegrees)) {
             throw new IllegalArgumentException("sun azimuth must be a finite number of degrees, got "
@@ -67,27 +73,27 @@ public record LightDirection(double azimuthDegrees, double elevationDegrees) {
         return new LightDirection(azimuthDegrees, Math.toDegrees(Math.atan2(Math.sin(e), k * Math.cos(e))));
     }
 
-    /** @return the east component of the unit vector toward the light */
+    /** {@return the east component of the unit vector toward the light} */
     public double east() {
         return Math.cos(Math.toRadians(elevationDegrees)) * Math.sin(Math.toRadians(azimuthDegrees));
     }
 
-    /** @return the north component of the unit vector toward the light */
+    /** {@return the north component of the unit vector toward the light} */
     public double north() {
         return Math.cos(Math.toRadians(elevationDegrees)) * Math.cos(Math.toRadians(azimuthDegrees));
     }
 
-    /** @return the up component of the unit vector toward the light (sin of the elevation) */
+    /** {@return the up component of the unit vector toward the light (sin of the elevation)} */
     public double up() {
         return Math.sin(Math.toRadians(elevationDegrees));
     }
 
-    /** @return true when the light is at or below the horizon: no direct light reaches any cell */
+    /** {@return true when the light is at or below the horizon: no direct light reaches any cell} */
     public boolean isBelowHorizon() {
         return elevationDegrees <= 0;
     }
 
-    /** @return true when the light is at the zenith: nothing casts a shadow */
+    /** {@return true when the light is at the zenith: nothing casts a shadow} */
     public boolean isAtZenith() {
         return elevationDegrees >= 90;
     }

@@ -15,10 +15,10 @@ public interface LightField {
      */
     LightDirection at(int col, int row);
 
-    /** @return the light at the centre of the grid; used where one direction must serve the whole grid */
+    /** {@return the light at the centre of the grid; used where one direction must serve the whole grid} */
     LightDirection central();
 
-    /** @return true when {@link #at} returns {@link #central()} everywhere */
+    /** {@return true when {@link #at} returns {@link #central()} everywhere} */
     boolean isUniform();
 
     /**

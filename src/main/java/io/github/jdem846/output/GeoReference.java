@@ -18,6 +18,15 @@ import java.util.Objects;
  */
 public record GeoReference(double westX, double northY, double eastX, double southY, CrsInfo crs) {
 
+    /**
+     * Checks that the CRS is given and that the edges are finite with east &gt; west and north &gt; south.
+     *
+     * @param westX x of the west edge of the first column
+     * @param northY y of the north edge of the first row
+     * @param eastX x of the east edge of the last column; greater than {@code westX}
+     * @param southY y of the south edge of the last row; less than {@code northY}
+     * @param crs the CRS ({@link CrsInfo#UNKNOWN} when unknown)
+     */
     public GeoReference {
         Objects.requireNonNull(crs, "crs");
         if (!Double.isFinite(westX) || !Double.isFinite(northY) || !Double.isFinite(eastX)
@@ -31,18 +40,33 @@ public record GeoReference(double westX, double northY, double eastX, double sou
         }
     }
 
-    /** The area covered by {@code grid}, outer cell edges, with its CRS. */
+    /**
+     * The area covered by {@code grid}, outer cell edges, with its CRS.
+     *
+     * @param grid the grid
+     * @return its outer edges and CRS
+     */
     public static GeoReference of(GridGeometry grid) {
         return new GeoReference(grid.originX(), grid.originY(), grid.eastX(), grid.southY(), grid.crs());
     }
 
-    /** Width in CRS units of one pixel of an image {@code imageWidth} pixels wide. */
+    /**
+     * Width in CRS units of one pixel of an image {@code imageWidth} pixels wide.
+     *
+     * @param imageWidth the image's width in pixels
+     * @return the pixel width, {@code (east − west) / imageWidth}
+     */
     public double pixelWidth(int imageWidth) {
         checkSize(imageWidth);
         return (eastX - westX) / imageWidth;
     }
 
-    /** Height in CRS units (positive) of one pixel of an image {@code imageHeight} pixels high. */
+    /**
+     * Height in CRS units (positive) of one pixel of an image {@code imageHeight} pixels high.
+     *
+     * @param imageHeight the image's height in pixels
+     * @return the pixel height, {@code (north − south) / imageHeight}
+     */
     public double pixelHeight(int imageHeight) {
         checkSize(imageHeight);
         return (northY - southY) / imageHeight;

@@ -14,13 +14,13 @@ import java.io.IOException;
  */
 public interface ImageSink extends AutoCloseable {
 
-    /** @return pixels across */
+    /** {@return pixels across} */
     int width();
 
-    /** @return pixels down */
+    /** {@return pixels down} */
     int height();
 
-    /** @return rows appended so far */
+    /** {@return rows appended so far} */
     int rowsWritten();
 
     /**

@@ -37,12 +37,12 @@ public final class OutputOverwritesInputException extends IOException {
         return what + ": " + which + ", which would be lost; choose another output name";
     }
 
-    /** @return the output file that was refused */
+    /** {@return the output file that was refused} */
     public Path output() {
         return output;
     }
 
-    /** @return the input file it would have replaced */
+    /** {@return the input file it would have replaced} */
     public Path input() {
         return input;
     }

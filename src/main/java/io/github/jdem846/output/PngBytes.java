@@ -17,6 +17,8 @@ public final class PngBytes {
      * The PNG of an ARGB picture (8-bit RGBA, non-premultiplied; alpha 0 stays transparent).
      *
      * @param argb             pixels, row-major, {@code width × height}
+     * @param width pixels per row
+     * @param height rows
      * @param compressionLevel deflate level 0 to 9
      * @return the file's bytes
      */

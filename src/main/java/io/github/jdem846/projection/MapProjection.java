@@ -134,27 +134,27 @@ public final class MapProjection {
         return new MapProjection(p.getName().getCode(), p, info.epsg(), centralMeridianOf(p));
     }
 
-    /** @return a short description, e.g. "robinson" or "EPSG:3395 (WGS 84 / World Mercator)" */
+    /** {@return a short description, e.g. "robinson" or "EPSG:3395 (WGS 84 / World Mercator)"} */
     public String label() {
         return label;
     }
 
-    /** @return the projected CRS, east–north axes in metres (or the CRS's unit) */
+    /** {@return the projected CRS, east–north axes in metres (or the CRS's unit)} */
     public ProjectedCRS crs() {
         return crs;
     }
 
-    /** @return the CRS as the writers take it: EPSG code when known, else WKT from the SIS object */
+    /** {@return the CRS as the writers take it: EPSG code when known, else WKT from the SIS object} */
     public CrsInfo crsInfo() {
         return CrsResolver.fromSis(crs, epsg);
     }
 
-    /** @return the central meridian in degrees (0 when the CRS names none) */
+    /** {@return the central meridian in degrees (0 when the CRS names none)} */
     public double centralMeridian() {
         return centralMeridian;
     }
 
-    /** @return the largest |latitude| the picture shows: 90°, or {@link #MERCATOR_LATITUDE_LIMIT} for Mercator */
+    /** {@return the largest |latitude| the picture shows: 90°, or {@link #MERCATOR_LATITUDE_LIMIT} for Mercator} */
     public double latitudeLimit() {
         return latitudeLimit;
     }

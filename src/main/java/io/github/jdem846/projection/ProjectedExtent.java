@@ -18,6 +18,14 @@ public record ProjectedExtent(double west, double south, double east, double nor
     /** Points per side of the grid sampled inside (the extreme of a projection may lie inside the outline). */
     static final int INSIDE_SAMPLES = 64;
 
+    /**
+     * Checks that the edges are finite with east &gt; west and north &gt; south.
+     *
+     * @param west x of the west edge
+     * @param south y of the south edge
+     * @param east x of the east edge, greater than {@code west}
+     * @param north y of the north edge, greater than {@code south}
+     */
     public ProjectedExtent {
         if (!(Double.isFinite(west) && Double.isFinite(south) && Double.isFinite(east) && Double.isFinite(north))
                 || !(east > west) || !(north > south)) {
@@ -116,12 +124,12 @@ public record ProjectedExtent(double west, double south, double east, double nor
         return k + 1;
     }
 
-    /** @return east − west */
+    /** {@return east − west} */
     public double width() {
         return east - west;
     }
 
-    /** @return north − south */
+    /** {@return north − south} */
     public double height() {
         return north - south;
     }

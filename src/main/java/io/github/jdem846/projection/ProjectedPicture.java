@@ -22,6 +22,16 @@ import java.util.Objects;
 public record ProjectedPicture(MapProjection projection, ProjectedExtent extent, int width, int height,
                                int[] argb) {
 
+    /**
+     * Checks that projection and extent are given and that there are {@code width × height} pixels.
+     *
+     * @param projection the projection
+     * @param extent the area it covers, in the projection's units
+     * @param width pixels across
+     * @param height pixels down
+     * @param argb non-premultiplied 0xAARRGGBB pixels, row 0 north, transparent off the map and outside the DEM. Owned
+     *     by this record: do not modify
+     */
     public ProjectedPicture {
         Objects.requireNonNull(projection, "projection");
         Objects.requireNonNull(extent, "extent");
@@ -31,13 +41,13 @@ public record ProjectedPicture(MapProjection projection, ProjectedExtent extent,
         }
     }
 
-    /** @return where the picture lies, in the projection's CRS (EPSG code when it has one, else its WKT) */
+    /** {@return where the picture lies, in the projection's CRS (EPSG code when it has one, else its WKT)} */
     public GeoReference geoReference() {
         return new GeoReference(extent.west(), extent.north(), extent.east(), extent.south(),
                 projection.crsInfo());
     }
 
-    /** @return a {@code TYPE_INT_ARGB} image backed by the pixels (no copy) */
+    /** {@return a {@code TYPE_INT_ARGB} image backed by the pixels (no copy)} */
     public BufferedImage toBufferedImage() {
         return ImageOutput.toBufferedImage(argb, width, height);
     }

@@ -29,6 +29,13 @@ import java.util.Objects;
  */
 public record ProjectedRender(MapProjection projection, int width, int height) {
 
+    /**
+     * Checks that the projection is given and that the sizes are ≥ 0.
+     *
+     * @param projection the output's projection
+     * @param width output pixels across, or 0 to follow {@code height}
+     * @param height output pixels down, or 0 to follow {@code width}; both 0: as wide as the relief picture
+     */
     public ProjectedRender {
         Objects.requireNonNull(projection, "projection");
         if (width < 0 || height < 0) {

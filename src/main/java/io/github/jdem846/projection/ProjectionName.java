@@ -37,7 +37,7 @@ public enum ProjectionName {
         this.names = List.of(names);
     }
 
-    /** @return the name the CLI takes, e.g. {@code winkel-tripel} */
+    /** {@return the name the CLI takes, e.g. {@code winkel-tripel}} */
     public String cliName() {
         return names.get(0);
     }
@@ -54,7 +54,7 @@ public enum ProjectionName {
         return Arrays.stream(values()).filter(p -> p.names.contains(key)).findFirst();
     }
 
-    /** @return the CLI names, comma separated */
+    /** {@return the CLI names, comma separated} */
     public static String list() {
         return String.join(", ", Arrays.stream(values()).map(ProjectionName::cliName).toList());
     }

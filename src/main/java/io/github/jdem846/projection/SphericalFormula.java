@@ -39,6 +39,6 @@ public sealed interface SphericalFormula permits Aitoff, Hammer, WinkelTripel, W
         inverse(x, y, lambdaPhi);
     }
 
-    /** @return the projection's name as ESRI and GDAL write it in WKT 1 ({@code PROJECTION["…"]}) */
+    /** {@return the projection's name as ESRI and GDAL write it in WKT 1 ({@code PROJECTION["…"]})} */
     String wktName();
 }

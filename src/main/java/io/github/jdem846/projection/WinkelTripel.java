@@ -14,6 +14,11 @@ public record WinkelTripel(double standardParallel) implements SphericalFormula 
     /** Winkel's standard parallel, arccos(2/π), in degrees. */
     public static final double WINKEL_PARALLEL = Math.toDegrees(Math.acos(2 / Math.PI));
 
+    /**
+     * Checks that the standard parallel is in [0, 90) degrees.
+     *
+     * @param standardParallel φ₁ in degrees, in [0, 90)
+     */
     public WinkelTripel {
         if (!(standardParallel >= 0 && standardParallel < 90)) {
             throw new IllegalArgumentException("the Winkel Tripel standard parallel must be in [0, 90) degrees, got "

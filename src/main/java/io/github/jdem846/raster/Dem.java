@@ -103,22 +103,22 @@ public final class Dem {
         this(values, geometry, Double.NaN);
     }
 
-    /** @return columns */
+    /** {@return columns} */
     public int width() {
         return geometry.width();
     }
 
-    /** @return rows */
+    /** {@return rows} */
     public int height() {
         return geometry.height();
     }
 
-    /** @return the grid's size, place and CRS */
+    /** {@return the grid's size, place and CRS} */
     public GridGeometry geometry() {
         return geometry;
     }
 
-    /** @return the no-data value the source declared, or NaN when it declared none (or declared NaN) */
+    /** {@return the no-data value the source declared, or NaN when it declared none (or declared NaN)} */
     public double declaredNoData() {
         return declaredNoData;
     }
@@ -155,7 +155,7 @@ public final class Dem {
         return values;
     }
 
-    /** @return min, max and count of valid cells (computed once) */
+    /** {@return min, max and count of valid cells (computed once)} */
     public ElevationStatistics statistics() {
         ElevationStatistics s = statistics;
         if (s == null) {
@@ -215,7 +215,7 @@ public final class Dem {
         return coverage != null ? coverage[i] : Float.isNaN(values[i]) ? 0 : 1;
     }
 
-    /** @return true when the DEM carries a coverage of its own ({@link #withCoverage}) */
+    /** {@return true when the DEM carries a coverage of its own ({@link #withCoverage})} */
     public boolean hasCoverage() {
         return coverage != null;
     }

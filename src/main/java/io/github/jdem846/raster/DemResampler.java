@@ -28,6 +28,10 @@ public final class DemResampler {
      * {@code dem} resampled to {@code width × height} cells (returned as is when the size already matches), enlarged
      * (if it is) by {@link #DEFAULT_UPSAMPLING}.
      *
+     * @param dem the grid
+     * @param width columns of the result
+     * @param height rows of the result
+     * @return the resampled grid, or {@code dem} itself
      * @throws IllegalArgumentException unless the size is at least 1×1 and at most {@link #MAX_CELLS} cells
      */
     public static Dem resample(Dem dem, int width, int height) {

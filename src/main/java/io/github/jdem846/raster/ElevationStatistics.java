@@ -7,6 +7,7 @@ package io.github.jdem846.raster;
  * @param max        highest valid elevation, NaN when there is none
  * @param validCount number of cells that hold an elevation
  * @param totalCount number of cells
+ * @serial exclude
  */
 public record ElevationStatistics(double min, double max, long validCount, long totalCount)
         implements java.io.Serializable {
@@ -68,12 +69,12 @@ public record ElevationStatistics(double min, double max, long validCount, long 
                 validCount + other.validCount, totalCount + other.totalCount);
     }
 
-    /** @return the number of no-data cells */
+    /** {@return the number of no-data cells} */
     public long noDataCount() {
         return totalCount - validCount;
     }
 
-    /** @return true when no cell holds an elevation */
+    /** {@return true when no cell holds an elevation} */
     public boolean isEmpty() {
         return validCount == 0;
     }

@@ -44,6 +44,8 @@ public final class GridGeometry {
     private volatile Optional<GeoLocator> locator; // derived from crs, built on first use
 
     /**
+     * A grid placed in a CRS, not cut from another.
+     *
      * @param width          number of columns, ≥ 1
      * @param height         number of rows, ≥ 1
      * @param originX        world x of the west edge of column 0
@@ -105,50 +107,61 @@ public final class GridGeometry {
     public record Placement(int col, int row, int rootWidth, int rootHeight) {
     }
 
-    /** @return where this grid lies in the grid it was cut from (see {@link Placement}) */
+    /** {@return where this grid lies in the grid it was cut from (see {@link Placement})} */
     public Placement placement() {
         return placement;
     }
 
-    /** A grid with unknown CRS whose cells are {@code cellSizeMeters} metres square (for DEMs made in memory). */
+    /**
+     * A grid with unknown CRS whose cells are {@code cellSizeMeters} metres square (for DEMs made in memory).
+     *
+     * @param width number of columns, ≥ 1
+     * @param height number of rows, ≥ 1
+     * @param cellSizeMeters the cells' side in metres, positive
+     * @return a grid whose north-west corner is at (0, {@code height × cellSizeMeters})
+     */
     public static GridGeometry metric(int width, int height, double cellSizeMeters) {
         CrsInfo local = CrsInfo.projected("local metric grid", null, 1.0, null);
         return new GridGeometry(width, height, 0, height * cellSizeMeters, cellSizeMeters, cellSizeMeters, local,
                 PixelAnchor.CORNER);
     }
 
+    /** {@return number of columns, ≥ 1} */
     public int width() {
         return width;
     }
 
+    /** {@return number of rows, ≥ 1} */
     public int height() {
         return height;
     }
 
-    /** @return world x of the west edge of the grid */
+    /** {@return world x of the west edge of the grid} */
     public double originX() {
         return originX;
     }
 
-    /** @return world y of the north edge of the grid */
+    /** {@return world y of the north edge of the grid} */
     public double originY() {
         return originY;
     }
 
-    /** @return cell width in CRS units */
+    /** {@return cell width in CRS units} */
     public double cellWidth() {
         return cellWidth;
     }
 
-    /** @return cell height in CRS units (positive) */
+    /** {@return cell height in CRS units (positive)} */
     public double cellHeight() {
         return cellHeight;
     }
 
+    /** {@return the CRS ({@link CrsInfo#UNKNOWN} when unknown)} */
     public CrsInfo crs() {
         return crs;
     }
 
+    /** {@return whether the source file declared its georeferencing for cell corners or cell centres} */
     public PixelAnchor declaredAnchor() {
         return declaredAnchor;
     }
@@ -156,6 +169,9 @@ public final class GridGeometry {
     /**
      * World x of the centre of column {@code col} (fractional columns allowed), computed from the root grid's
      * origin ({@link #placement}), so that a window gives its cells exactly the root's values, bit for bit.
+     *
+     * @param col column, from 0 at the west; fractional values lie between centres
+     * @return the world x, in CRS units
      */
     public double centerX(double col) {
         return rootOriginX + (placement.col() + col + 0.5) * cellWidth;
@@ -165,27 +181,35 @@ public final class GridGeometry {
      * World y of the centre of row {@code row} (fractional rows allowed), computed from the root grid's origin as
      * {@link #centerX} is: the per-row metric sizes of a window of a latitude/longitude grid, and what is computed
      * from them, are those of the same rows of the root.
+     *
+     * @param row row, from 0 at the north; fractional values lie between centres
+     * @return the world y, in CRS units
      */
     public double centerY(double row) {
         return rootOriginY - (placement.row() + row + 0.5) * cellHeight;
     }
 
-    /** @return world x of the east edge */
+    /** {@return world x of the east edge} */
     public double eastX() {
         return originX + width * cellWidth;
     }
 
-    /** @return world y of the south edge */
+    /** {@return world y of the south edge} */
     public double southY() {
         return originY - height * cellHeight;
     }
 
-    /** @return true when cell sizes in metres are known (projected with a known unit, or geographic) */
+    /** {@return true when cell sizes in metres are known (projected with a known unit, or geographic)} */
     public boolean hasMetricUnits() {
         return crs.kind() != CrsInfo.Kind.UNKNOWN;
     }
 
-    /** East–west size in metres of a cell of row {@code row} (see the class comment). */
+    /**
+     * East–west size in metres of a cell of row {@code row} (see the class comment).
+     *
+     * @param row row, from 0 at the north
+     * @return the width in metres
+     */
     public double cellWidthMeters(int row) {
         return switch (crs.kind()) {
             case PROJECTED -> groundSizes
@@ -197,7 +221,12 @@ public final class GridGeometry {
         };
     }
 
-    /** North–south size in metres of a cell of row {@code row} (see the class comment). */
+    /**
+     * North–south size in metres of a cell of row {@code row} (see the class comment).
+     *
+     * @param row row, from 0 at the north
+     * @return the height in metres
+     */
     public double cellHeightMeters(int row) {
         return switch (crs.kind()) {
             case PROJECTED -> {
@@ -221,7 +250,7 @@ public final class GridGeometry {
         return rootOriginY - ((long) placement.row() + row) * cellHeight;
     }
 
-    /** @return the ellipsoid used for metric sizes (the CRS's, or WGS 84) */
+    /** {@return the ellipsoid used for metric sizes (the CRS's, or WGS 84)} */
     public Ellipsoid ellipsoid() {
         return crs.ellipsoidOrWgs84();
     }
@@ -230,6 +259,8 @@ public final class GridGeometry {
      * The latitude/longitude locator of this grid's CRS (built once), or empty when the CRS cannot be located
      * (see {@link GeoLocator#forCrs}). A projected CRS a reader kept only as its EPSG code (a UTM zone) is resolved
      * by Apache SIS here, on first use.
+     *
+     * @return the locator, or empty
      */
     public Optional<GeoLocator> geoLocator() {
         Optional<GeoLocator> l = locator;
@@ -240,7 +271,13 @@ public final class GridGeometry {
         return l;
     }
 
-    /** Latitude and longitude of the centre of cell ({@code col}, {@code row}), when the CRS allows. */
+    /**
+     * Latitude and longitude of the centre of cell ({@code col}, {@code row}), when the CRS allows.
+     *
+     * @param col column, from 0 at the west
+     * @param row row, from 0 at the north
+     * @return the latitude and longitude, or empty when the CRS cannot be located
+     */
     public Optional<LatLon> cellCenterLatLon(int col, int row) {
         return geoLocator().map(l -> l.toLatLon(centerX(col), centerY(row)));
     }
@@ -250,6 +287,8 @@ public final class GridGeometry {
      * its true length on the ground at the grid's centre (the projection's scale factor there; ≈ 1.52 for Web
      * Mercator at 49° N, ≈ 1 for UTM). Empty when it cannot be computed (geographic or unknown CRS, projection not
      * known offline).
+     *
+     * @return the scale factor, or empty
      */
     public java.util.OptionalDouble groundScaleFactor() {
         if (crs.kind() != CrsInfo.Kind.PROJECTED || width < 1) {
@@ -277,7 +316,7 @@ public final class GridGeometry {
         }
     }
 
-    /** @return the latitude/longitude box of the grid's outer edges, when the CRS allows */
+    /** {@return the latitude/longitude box of the grid's outer edges, when the CRS allows} */
     public Optional<LatLonBox> latLonExtent() {
         return geoLocator().map(l -> l.extent(originX, southY(), eastX(), originY));
     }
@@ -285,6 +324,12 @@ public final class GridGeometry {
     /**
      * The geometry of the sub-grid of {@code w × h} cells starting at ({@code col}, {@code row}); the window may
      * extend past the grid (callers clip first when they must not).
+     *
+     * @param col first column, relative to this grid
+     * @param row first row, relative to this grid
+     * @param w number of columns
+     * @param h number of rows
+     * @return the window's geometry, in the same CRS
      */
     public GridGeometry window(int col, int row, int w, int h) {
         return new GridGeometry(this, w, h, originX + col * cellWidth, originY - row * cellHeight,
@@ -295,6 +340,10 @@ public final class GridGeometry {
     /**
      * The geometry of this grid decimated so that each new cell covers {@code factorX × factorY} old cells: the
      * extent is kept and the last partial block, if any, counts as a whole cell.
+     *
+     * @param factorX old columns per new column, ≥ 1
+     * @param factorY old rows per new row, ≥ 1
+     * @return the decimated geometry, at least 1 × 1 cells
      */
     public GridGeometry decimate(int factorX, int factorY) {
         if (factorX < 1 || factorY < 1) {
@@ -310,6 +359,9 @@ public final class GridGeometry {
      * This grid on {@code body} when the file did not name an ellipsoid: when the CRS names none, or was only
      * assumed from the extent (then it becomes "geographic on {@code body}", also assumed). A CRS read from the
      * file keeps its own ellipsoid, and this grid is returned unchanged.
+     *
+     * @param body the body the DEM lies on; not null
+     * @return this grid, or a copy with the body's ellipsoid
      */
     public GridGeometry withDefaultEllipsoid(Ellipsoid body) {
         Objects.requireNonNull(body, "body");
@@ -323,7 +375,12 @@ public final class GridGeometry {
         return withCrs(c);
     }
 
-    /** A copy with another CRS (ground cell sizes are kept while it is still Web Mercator). */
+    /**
+     * A copy with another CRS (ground cell sizes are kept while it is still Web Mercator).
+     *
+     * @param newCrs the CRS; not null
+     * @return a copy with the same cells and extent
+     */
     public GridGeometry withCrs(CrsInfo newCrs) {
         return new GridGeometry(width, height, originX, originY, cellWidth, cellHeight,
                 Objects.requireNonNull(newCrs, "crs"), declaredAnchor, placement,
@@ -349,7 +406,7 @@ public final class GridGeometry {
                 placement, true, rootOriginX, rootOriginY);
     }
 
-    /** @return true when metric cell sizes are measured on the ground ({@link #withGroundCellSizes()}) */
+    /** {@return true when metric cell sizes are measured on the ground ({@link #withGroundCellSizes()})} */
     public boolean hasGroundCellSizes() {
         return groundSizes;
     }

@@ -17,15 +17,21 @@ public final class GridRequestException extends IllegalArgumentException {
         SIZE
     }
 
+    /** The part of the request that does not fit. */
     private final Part part;
 
-    /** @param part what does not fit; @param message what is wrong, with the grid's size or extent */
+    /**
+     * A request that does not fit the grid.
+     *
+     * @param part    what does not fit
+     * @param message what is wrong, with the grid's size or extent
+     */
     public GridRequestException(Part part, String message) {
         super(message);
         this.part = java.util.Objects.requireNonNull(part, "part");
     }
 
-    /** @return the part of the request at fault */
+    /** {@return the part of the request at fault} */
     public Part part() {
         return part;
     }

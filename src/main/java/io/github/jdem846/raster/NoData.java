@@ -9,7 +9,13 @@ public final class NoData {
     private NoData() {
     }
 
-    /** True when {@code cell} is no-data under the declared value ({@code NaN} = none declared). */
+    /**
+     * True when {@code cell} is no-data under the declared value ({@code NaN} = none declared).
+     *
+     * @param cell the stored value
+     * @param declared the declared no-data value, or NaN when none is declared
+     * @return whether the cell is NaN or equals the declared value as float32
+     */
     public static boolean isNoData(float cell, double declared) {
         return Float.isNaN(cell) || (!Double.isNaN(declared) && cell == toFloat32(declared));
     }
@@ -22,6 +28,9 @@ public final class NoData {
      * mean ±{@code Float.MAX_VALUE}, the usual no-data of float rasters, however the header rounded it: printed
      * with more digits ({@code -3.4028235e38}, which overflows float32) or fewer ({@code -3.40282e+38}, as
      * {@code printf %g} writes it, which would otherwise be a different float32).
+     *
+     * @param declared the declared no-data value, or NaN
+     * @return the float32 a cell holding that value has, NaN for NaN
      */
     public static float toFloat32(double declared) {
         if (Double.isNaN(declared)) {
@@ -34,7 +43,13 @@ public final class NoData {
         return (float) declared;
     }
 
-    /** Replaces every no-data cell of {@code values} with NaN, in place. */
+    /**
+     * Replaces every no-data cell of {@code values} with NaN, in place.
+     *
+     * @param values the cells, changed in place
+     * @param declared the declared no-data value, or NaN when none is declared (then only NaN cells are no-data and
+     *     nothing changes)
+     */
     public static void normalize(float[] values, double declared) {
         if (Double.isNaN(declared)) {
             return;

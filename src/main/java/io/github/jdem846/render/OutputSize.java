@@ -26,6 +26,13 @@ public record OutputSize(int width, int height, double scale) {
     /** Most pixels in a picture: the longest Java array, which holds them (one int per ARGB pixel). */
     public static final long MAX_PIXELS = Integer.MAX_VALUE - 8L;
 
+    /**
+     * Checks the sides and the scale, and that a scale is not given with a width or height.
+     *
+     * @param width target width in pixels (1 to {@link #MAX_SIDE}), or 0 when not given
+     * @param height target height in pixels (1 to {@link #MAX_SIDE}), or 0 when not given
+     * @param scale pixels per DEM cell (0.5 = half size; above 0, at most {@link #MAX_SIDE}), or 0 when not given
+     */
     public OutputSize {
         requireSide(width, "width", true);
         requireSide(height, "height", true);

@@ -35,6 +35,8 @@ public interface RenderProgress {
     String WRITE = "write";
 
     /**
+     * Hears that {@code done} of {@code total} units of {@code stage} are finished.
+     *
      * @param stage a short name of the running stage ({@link #READ}, {@link #SHADOWS}, …)
      * @param done  units finished so far in this stage, 0 ≤ done ≤ total
      * @param total units in this stage

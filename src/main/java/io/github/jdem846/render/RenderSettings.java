@@ -45,6 +45,15 @@ public record RenderSettings(int parallelism, int tileSize, ForkJoinPool pool) {
      */
     public static final int MAX_PARALLELISM = 1024;
 
+    /**
+     * Checks the thread count and tile size; with a pool, the thread count becomes the pool's parallelism (at most
+     * {@link #MAX_PARALLELISM}).
+     *
+     * @param parallelism number of worker threads, 1 to {@link #MAX_PARALLELISM}; with a pool, its parallelism (at most
+     *     {@link #MAX_PARALLELISM}) whatever is given
+     * @param tileSize tile edge in cells, {@link #MIN_TILE_SIZE} to {@link #MAX_TILE_SIZE}
+     * @param pool the pool every render runs on, owned by the caller, or {@code null} for a pool of its own per render
+     */
     public RenderSettings {
         if (pool != null) {
             parallelism = Math.min(MAX_PARALLELISM, pool.getParallelism());
@@ -90,7 +99,7 @@ public record RenderSettings(int parallelism, int tileSize, ForkJoinPool pool) {
         return new RenderSettings(value, tileSize, pool);
     }
 
-    /** @return all available processors (at most {@link #MAX_PARALLELISM}) and the default tile size */
+    /** {@return all available processors (at most {@link #MAX_PARALLELISM}) and the default tile size} */
     public static RenderSettings defaults() {
         return new RenderSettings(Math.min(MAX_PARALLELISM, Runtime.getRuntime().availableProcessors()),
                 DEFAULT_TILE_SIZE);

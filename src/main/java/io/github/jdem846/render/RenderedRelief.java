@@ -14,7 +14,7 @@ import java.awt.image.BufferedImage;
  */
 public record RenderedRelief(int width, int height, int[] argb, GridGeometry geometry) {
 
-    /** @return A new {@code TYPE_INT_ARGB} image holding a copy of the pixels */
+    /** {@return A new {@code TYPE_INT_ARGB} image holding a copy of the pixels} */
     public BufferedImage toBufferedImage() {
         BufferedImage img = new BufferedImage(width, height, BufferedImage.TYPE_INT_ARGB);
         img.setRGB(0, 0, width, height, argb, 0, width);

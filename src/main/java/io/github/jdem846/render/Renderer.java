@@ -56,6 +56,11 @@ public final class Renderer {
 
     private final RenderSettings settings;
 
+    /**
+     * A renderer with the given thread count, tile size and pool.
+     *
+     * @param settings threads, tile size and optional pool; not null
+     */
     public Renderer(RenderSettings settings) {
         this.settings = Objects.requireNonNull(settings, "settings");
     }
@@ -65,12 +70,27 @@ public final class Renderer {
         this(RenderSettings.defaults());
     }
 
-    /** Renders without progress reports. */
+    /**
+     * Renders without progress reports.
+     *
+     * @param dem the elevations
+     * @param scene what to draw: tint, hillshade, shadows and light
+     * @return the picture, one pixel per cell of {@code dem}
+     * @throws InterruptedException when the calling thread is interrupted; no picture is returned
+     */
     public RenderedRelief render(Dem dem, Scene scene) throws InterruptedException {
         return render(dem, scene, RenderProgress.NONE);
     }
 
-    /** Renders {@code scene} over the whole of {@code dem}, reporting progress per stage. */
+    /**
+     * Renders {@code scene} over the whole of {@code dem}, reporting progress per stage.
+     *
+     * @param dem the elevations
+     * @param scene what to draw: tint, hillshade, shadows and light
+     * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports
+     * @return the picture, one pixel per cell of {@code dem}
+     * @throws InterruptedException when the calling thread is interrupted; no picture is returned
+     */
     public RenderedRelief render(Dem dem, Scene scene, RenderProgress progress) throws InterruptedException {
         return render(dem, scene, CellWindow.whole(dem.width(), dem.height()), progress);
     }
@@ -79,6 +99,13 @@ public final class Renderer {
      * Renders only the cells of {@code area} (the picture has its size and geometry); the rest of {@code dem} is
      * read as the halo that hillshade normals and cast shadows need, but never drawn or traced. Equal to the same
      * cells of a whole-grid render.
+     *
+     * @param dem the elevations, the area and its halo
+     * @param scene what to draw: tint, hillshade, shadows and light
+     * @param area the cells to draw, inside {@code dem}
+     * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports
+     * @return the picture of {@code area}, one pixel per cell
+     * @throws InterruptedException when the calling thread is interrupted; no picture is returned
      */
     public RenderedRelief render(Dem dem, Scene scene, CellWindow area, RenderProgress progress)
             throws InterruptedException {
@@ -143,13 +170,30 @@ public final class Renderer {
     /**
      * The illumination layer alone (for single-band hillshade products): the cosine of incidence of every cell,
      * NaN for no-data, computed tile by tile.
+     *
+     * @param dem the elevations
+     * @param stage computes the illumination of a block of cells ({@link HillshadeMethod#stage})
+     * @param light the light of each cell
+     * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports
+     * @return the illumination, row-major, one value per cell of {@code dem}
+     * @throws InterruptedException when the calling thread is interrupted
      */
     public float[] illumination(Dem dem, IlluminationStage stage, LightField light, RenderProgress progress)
             throws InterruptedException {
         return illumination(dem, stage, light, CellWindow.whole(dem.width(), dem.height()), progress);
     }
 
-    /** The illumination of the cells of {@code area} only (row length {@code area.width()}). */
+    /**
+     * The illumination of the cells of {@code area} only (row length {@code area.width()}).
+     *
+     * @param dem the elevations, the area and its halo
+     * @param stage computes the illumination of a block of cells ({@link HillshadeMethod#stage})
+     * @param light the light of each cell
+     * @param area the cells to compute, inside {@code dem}
+     * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports
+     * @return the illumination, row-major, one value per cell of {@code area}
+     * @throws InterruptedException when the calling thread is interrupted
+     */
     public float[] illumination(Dem dem, IlluminationStage stage, LightField light, CellWindow area,
                                 RenderProgress progress) throws InterruptedException {
         int width = area.width();
@@ -166,13 +210,32 @@ public final class Renderer {
      * The single-band gray hillshade product: {@link HillshadeMethod#gray} of every cell's illumination (0 =
      * no-data), computed and converted tile by tile, so it equals {@code method.toGray(illumination(…))} without
      * holding the float layer.
+     *
+     * @param dem the elevations
+     * @param method the hillshade method
+     * @param options its z-factor, intensities and scale
+     * @param light the light of each cell
+     * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports
+     * @return the gray values, row-major, one byte per cell of {@code dem}
+     * @throws InterruptedException when the calling thread is interrupted
      */
     public byte[] hillshadeGray(Dem dem, HillshadeMethod method, HillshadeOptions options, LightField light,
                                 RenderProgress progress) throws InterruptedException {
         return hillshadeGray(dem, method, options, light, CellWindow.whole(dem.width(), dem.height()), progress);
     }
 
-    /** {@link #hillshadeGray(Dem, HillshadeMethod, HillshadeOptions, LightField, RenderProgress)} of {@code area}. */
+    /**
+     * {@link #hillshadeGray(Dem, HillshadeMethod, HillshadeOptions, LightField, RenderProgress)} of {@code area}.
+     *
+     * @param dem the elevations, the area and its halo
+     * @param method the hillshade method
+     * @param options its z-factor, intensities and scale
+     * @param light the light of each cell
+     * @param area the cells to compute, inside {@code dem}
+     * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports
+     * @return the gray values, row-major, one byte per cell of {@code area}
+     * @throws InterruptedException when the calling thread is interrupted
+     */
     public byte[] hillshadeGray(Dem dem, HillshadeMethod method, HillshadeOptions options, LightField light,
                                 CellWindow area, RenderProgress progress) throws InterruptedException {
         Objects.requireNonNull(method, "method");
@@ -213,12 +276,27 @@ public final class Renderer {
 
     /**
      * The cast-shadow layer alone: the shadowed fraction of every cell (0 = lit, 1 = shadow; no-data 0).
+     *
+     * @param dem the elevations
+     * @param scene its shadow algorithm, options and light
+     * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports
+     * @return the shadowed fractions, row-major, one value per cell of {@code dem}
+     * @throws InterruptedException when the calling thread is interrupted
      */
     public float[] shadows(Dem dem, Scene scene, RenderProgress progress) throws InterruptedException {
         return shadows(dem, scene, CellWindow.whole(dem.width(), dem.height()), progress);
     }
 
-    /** The cast-shadow layer of the cells of {@code area} only (row length {@code area.width()}). */
+    /**
+     * The cast-shadow layer of the cells of {@code area} only (row length {@code area.width()}).
+     *
+     * @param dem the elevations, the area and its halo
+     * @param scene its shadow algorithm, options and light
+     * @param area the cells to compute, inside {@code dem}
+     * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports
+     * @return the shadowed fractions, row-major, one value per cell of {@code area}
+     * @throws InterruptedException when the calling thread is interrupted
+     */
     public float[] shadows(Dem dem, Scene scene, CellWindow area, RenderProgress progress)
             throws InterruptedException {
         requireInside(area, dem);

@@ -37,6 +37,24 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
                     double shadowIntensity, double fade, ElevationStatistics tintRange, LightModel lightModel,
                     double ambient, int skyDirections) {
 
+    /**
+     * Checks that the options and light are given and that the weights are in range.
+     *
+     * @param tint the colour ramp, or {@code null} for a plain mid-gray base (0.5, the original's gray tint)
+     * @param hillshade the hillshade method, or {@code null} for none (illumination 0 everywhere)
+     * @param hillshadeOptions z-factor, light multiple and the tone (light/dark intensity, spot exponent)
+     * @param shadows the cast-shadow algorithm, or {@code null}/NONE for none
+     * @param shadowOptions options of the cast-shadow algorithm
+     * @param light the light (uniform, or varying over the grid)
+     * @param shadowIntensity a cell in cast shadow loses 2 × this much brightness (original 0.4)
+     * @param fade extra darkening in [0, 2] for the whole scene, e.g. the twilight fade (0 in daylight)
+     * @param tintRange the elevation range a percent tint is stretched over, or {@code null} for the rendered DEM's own
+     *     range (give the whole file's range when rendering a window or a reduced copy)
+     * @param lightModel how sun, cast shadows and sky combine ({@link LightModel}; the original's: JDEM846)
+     * @param ambient the weight W of the light of the sky, 0 to 1; above 0 the sky-view factor of every cell is
+     *     computed ({@link SkyView}), at 0 it is not
+     * @param skyDirections the number of azimuths of the sky-view factor ({@link SkyViewOptions#directions()})
+     */
     public Scene {
         Objects.requireNonNull(hillshadeOptions, "hillshadeOptions");
         Objects.requireNonNull(shadowOptions, "shadowOptions");
@@ -204,7 +222,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
                 tintRange, lightModel, ambient, directions);
     }
 
-    /** @return true when the sky-view factor is to be computed (an ambient weight above 0) */
+    /** {@return true when the sky-view factor is to be computed (an ambient weight above 0)} */
     public boolean hasAmbient() {
         return ambient > 0;
     }
@@ -229,7 +247,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
         return light.central().forHeightsScaledBy(hillshadeOptions.zFactor());
     }
 
-    /** @return true when cast shadows are to be computed */
+    /** {@return true when cast shadows are to be computed} */
     public boolean hasShadows() {
         return shadows != null && shadows != ShadowAlgorithm.NONE;
     }

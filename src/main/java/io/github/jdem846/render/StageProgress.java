@@ -22,6 +22,8 @@ public final class StageProgress {
     private long reported = -1;
 
     /**
+     * Counts the progress of {@code stage} for {@code progress}; the constructor reports nothing.
+     *
      * @param progress told of the stage
      * @param stage    the stage's name
      * @param total    units in the stage, ≥ 0
@@ -75,7 +77,7 @@ public final class StageProgress {
         report(total);
     }
 
-    /** @return the stage's units in all */
+    /** {@return the stage's units in all} */
     public long total() {
         return total;
     }

@@ -113,15 +113,30 @@ public enum HillshadeMethod {
         }
     };
 
-    /** The illumination stage of this method with the given options. */
+    /**
+     * The illumination stage of this method with the given options.
+     *
+     * @param options z-factor, intensities and horizontal scale
+     * @return the stage, which computes the illumination of a block of cells
+     */
     public abstract IlluminationStage stage(HillshadeOptions options);
 
-    /** The gray byte (0 = no-data, 1 … 255) of one cell's illumination, as an int. */
+    /**
+     * The gray byte (0 = no-data, 1 … 255) of one cell's illumination, as an int.
+     *
+     * @param illumination the illumination as this method's stage writes it; NaN for no-data
+     * @param options the options the illumination was computed with
+     * @return 0 for no-data, else 1 to 255
+     */
     public abstract int gray(float illumination, HillshadeOptions options);
 
     /**
      * The gray bytes of a whole illumination array (as written by this method's stage), 0 = no-data. Read a byte as
      * unsigned: {@code out[i] & 0xFF}.
+     *
+     * @param illumination the illumination, row-major; NaN for no-data
+     * @param options the options the illumination was computed with
+     * @return one gray byte per value
      */
     public byte[] toGray(float[] illumination, HillshadeOptions options) {
         Objects.requireNonNull(illumination, "illumination");

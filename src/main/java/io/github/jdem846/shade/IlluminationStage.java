@@ -15,6 +15,14 @@ public interface IlluminationStage {
     /**
      * Writes the illumination of cells [{@code col0}, {@code col0 + w}) × [{@code row0}, {@code row0 + h}) into
      * {@code out}, row-major with row length {@code w}.
+     *
+     * @param dem the elevations
+     * @param light where the light comes from, in the grid's frame
+     * @param col0 first column
+     * @param row0 first row
+     * @param w number of columns
+     * @param h number of rows
+     * @param out receives {@code w × h} values, NaN for no-data
      */
     void illuminate(Dem dem, LightDirection light, int col0, int row0, int w, int h, float[] out);
 }

@@ -31,12 +31,27 @@ public enum ShadowAlgorithm {
     /** No cast shadows: every cell lit. */
     NONE;
 
-    /** Shadows of the whole DEM on the common ForkJoinPool. */
+    /**
+     * Shadows of the whole DEM on the common ForkJoinPool.
+     *
+     * @param dem the elevations
+     * @param light where the light comes from, in the grid's frame
+     * @param options step, sampling, soft shadows and curvature
+     * @return the shadowed fraction of every cell, in [0, 1]
+     */
     public ShadowMask compute(Dem dem, LightDirection light, ShadowOptions options) {
         return compute(dem, light, options, ForkJoinPool.commonPool());
     }
 
-    /** Shadows of the whole DEM, the work split across {@code pool}. */
+    /**
+     * Shadows of the whole DEM, the work split across {@code pool}.
+     *
+     * @param dem the elevations
+     * @param light where the light comes from, in the grid's frame
+     * @param options step, sampling, soft shadows and curvature
+     * @param pool the pool the rows or lines are computed on
+     * @return the shadowed fraction of every cell, in [0, 1]
+     */
     public ShadowMask compute(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool) {
         return computeWindow(dem, light, options, pool, CellWindow.whole(dem.width(), dem.height()));
     }
@@ -46,6 +61,13 @@ public enum ShadowAlgorithm {
      * the DEM only inside {@link ShadowHalo#window(Dem, LightDirection, ShadowOptions, CellWindow)}; {@code sweep}
      * reads a halo longer by (zMax − zMin)/tan(elevation) toward the sun. Hard-shadow results are identical to the
      * same cells of a whole-DEM computation, for any window and any pool.
+     *
+     * @param dem the elevations
+     * @param light where the light comes from, in the grid's frame
+     * @param options step, sampling, soft shadows and curvature
+     * @param pool the pool the rows or lines are computed on
+     * @param window the cells to compute, inside the DEM
+     * @return the shadowed fractions of the window's cells, in [0, 1]
      */
     public ShadowMask computeWindow(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
                                     CellWindow window) {
@@ -338,7 +360,12 @@ public enum ShadowAlgorithm {
      * just these cells, so the cost grows with {@code cells.length} (the accuracy study measures them on a random
      * sample of a large grid this way); {@code SWEEP} has no per-cell form and computes the whole grid first.
      *
+     * @param dem the elevations
+     * @param light where the light comes from, in the grid's frame
+     * @param options step, sampling, soft shadows and curvature
+     * @param pool the pool the work is split across
      * @param cells flat cell indices, {@code row · width + col}, each in [0, width · height)
+     * @return the shadowed fraction of each listed cell, in [0, 1], in the order of {@code cells}
      */
     public float[] computeCells(Dem dem, LightDirection light, ShadowOptions options, ForkJoinPool pool,
                                 int[] cells) {

@@ -28,6 +28,12 @@ public final class ShadowHalo {
      * Horizontal distance in metres toward the sun beyond which no terrain can shade a cell of elevation
      * ≥ {@code tileMin}: 0 when the sun is at or below the horizon or at the zenith (nothing is traced) or when no
      * elevation is known; +∞ when the (lower limb of the) sun is at or below the horizon with soft shadows.
+     *
+     * @param zMax highest elevation of the whole DEM, in metres
+     * @param tileMin lowest valid elevation in the tile, in metres
+     * @param light where the light comes from
+     * @param options curvature and soft shadows, which lengthen the distance
+     * @return the distance in metres, ≥ 0, possibly +∞
      */
     public static double distanceMeters(double zMax, double tileMin, LightDirection light, ShadowOptions options) {
         double e = light.elevationDegrees();
@@ -48,6 +54,10 @@ public final class ShadowHalo {
      * @param geometry the whole grid
      * @param zMax     highest elevation of the whole DEM
      * @param tileMin  lowest valid elevation in the tile
+     * @param light where the light comes from, in the grid's frame
+     * @param options curvature and soft shadows, which lengthen the halo
+     * @param tile the cells to be computed
+     * @return the cells to read, containing {@code tile}
      */
     public static CellWindow window(GridGeometry geometry, double zMax, double tileMin, LightDirection light,
                                     ShadowOptions options, CellWindow tile) {
@@ -83,7 +93,15 @@ public final class ShadowHalo {
         return new CellWindow(c0, r0, c1 - c0, r1 - r0);
     }
 
-    /** {@link #window(GridGeometry, double, double, LightDirection, ShadowOptions, CellWindow)} for a DEM in memory. */
+    /**
+     * {@link #window(GridGeometry, double, double, LightDirection, ShadowOptions, CellWindow)} for a DEM in memory.
+     *
+     * @param dem the elevations, whose maximum and the tile's minimum set the halo
+     * @param light where the light comes from, in the grid's frame
+     * @param options curvature and soft shadows, which lengthen the halo
+     * @param tile the cells to be computed
+     * @return the cells to read, containing {@code tile}
+     */
     public static CellWindow window(Dem dem, LightDirection light, ShadowOptions options, CellWindow tile) {
         return window(dem.geometry(), dem.statistics().max(), tileMin(dem, tile), light, options, tile);
     }

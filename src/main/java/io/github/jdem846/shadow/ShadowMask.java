@@ -11,7 +11,13 @@ public final class ShadowMask {
     private final int height;
     private final float[] shadow;
 
-    /** Wraps {@code shadow} (not copied), row-major with row length {@code width}. */
+    /**
+     * Wraps {@code shadow} (not copied), row-major with row length {@code width}.
+     *
+     * @param width number of columns, ≥ 1
+     * @param height number of rows, ≥ 1
+     * @param shadow shadowed fractions, {@code width × height} values
+     */
     public ShadowMask(int width, int height, float[] shadow) {
         if (width < 1 || height < 1 || shadow.length != (long) width * height) {
             throw new IllegalArgumentException("a " + width + "×" + height + " mask needs " + (long) width * height
@@ -31,25 +37,41 @@ public final class ShadowMask {
         return new ShadowMask(width, height, a);
     }
 
+    /** {@return number of columns} */
     public int width() {
         return width;
     }
 
+    /** {@return number of rows} */
     public int height() {
         return height;
     }
 
-    /** Shadowed fraction of cell ({@code col}, {@code row}), in [0, 1]. */
+    /**
+     * Shadowed fraction of cell ({@code col}, {@code row}), in [0, 1].
+     *
+     * @param col column, from 0 at the left
+     * @param row row, from 0 at the top
+     * @return the fraction
+     */
     public float get(int col, int row) {
         return shadow[row * width + col];
     }
 
-    /** The backing array (row-major, not a copy); callers must not modify it. */
+    /**
+     * The backing array (row-major, not a copy); callers must not modify it.
+     *
+     * @return the shadowed fractions, row-major
+     */
     public float[] backingArray() {
         return shadow;
     }
 
-    /** The mask as bytes, 0 = lit, 255 = shadow, rounded. */
+    /**
+     * The mask as bytes, 0 = lit, 255 = shadow, rounded.
+     *
+     * @return one byte per cell, row-major
+     */
     public byte[] toBytes() {
         byte[] b = new byte[shadow.length];
         for (int i = 0; i < shadow.length; i++) {
@@ -58,7 +80,11 @@ public final class ShadowMask {
         return b;
     }
 
-    /** Number of cells whose shadowed fraction is at least one half. */
+    /**
+     * Number of cells whose shadowed fraction is at least one half.
+     *
+     * @return the count of mostly shadowed cells
+     */
     public long shadowedCount() {
         long n = 0;
         for (float v : shadow) {
@@ -72,6 +98,9 @@ public final class ShadowMask {
     /**
      * Fraction of cells on which this mask and {@code other} disagree, a cell counting as shadowed when its
      * fraction is at least one half.
+     *
+     * @param other a mask of the same size
+     * @return the fraction of cells, in [0, 1]
      */
     public double disagreement(ShadowMask other) {
         if (other.width != width || other.height != height) {

@@ -14,6 +14,8 @@ public interface ShadowProgress {
     ShadowProgress NONE = (done, total) -> { };
 
     /**
+     * Hears that {@code done} of {@code total} units are finished.
+     *
      * @param done  units finished so far
      * @param total units in all
      */

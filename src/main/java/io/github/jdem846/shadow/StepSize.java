@@ -20,6 +20,11 @@ public record StepSize(double cells) {
     /** An eighth of a cell: the step of the {@code exact} reference. */
     public static final StepSize EIGHTH_CELL = new StepSize(0.125);
 
+    /**
+     * Checks the range: NaN for the article's interval, else 1/64 to 64 cells.
+     *
+     * @param cells step in cells along the major axis; NaN means the article's radius interval
+     */
     public StepSize {
         if (!Double.isNaN(cells) && !(cells >= 1.0 / 64 && cells <= 64)) {
             throw new IllegalArgumentException("ray step must be between 1/64 and 64 cells (or the article's radius"
@@ -27,12 +32,21 @@ public record StepSize(double cells) {
         }
     }
 
-    /** A step of {@code cells} cells along the major axis, 1/64 to 64. */
+    /**
+     * A step of {@code cells} cells along the major axis, 1/64 to 64.
+     *
+     * @param cells the step in cells along the major axis
+     * @return the step
+     */
     public static StepSize ofCells(double cells) {
         return new StepSize(cells);
     }
 
-    /** True for the article's radius interval (eq. 9). */
+    /**
+     * True for the article's radius interval (eq. 9).
+     *
+     * @return whether the step follows the article's radius interval
+     */
     public boolean isArticle() {
         return Double.isNaN(cells);
     }

@@ -22,12 +22,25 @@ public record Body(String name, Ellipsoid ellipsoid, boolean isEarth) {
     /** Mars, a sphere of 3389.5 km. */
     public static final Body MARS = new Body("Mars", Ellipsoid.MARS, false);
 
+    /**
+     * Checks that the name and the figure are given.
+     *
+     * @param name a name for messages, e.g. "Moon"
+     * @param ellipsoid its figure
+     * @param isEarth true for the Earth, the only body with sun positions by date and time
+     */
     public Body {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(ellipsoid, "ellipsoid");
     }
 
-    /** {@code earth}, {@code moon} or {@code mars}, in any case. */
+    /**
+     * {@code earth}, {@code moon} or {@code mars}, in any case.
+     *
+     * @param name the body's name, {@code null} or any other name is refused
+     * @return the matching constant ({@link #EARTH}, {@link #MOON} or {@link #MARS})
+     * @throws IllegalArgumentException for any other name, with the names that are accepted
+     */
     public static Body named(String name) {
         String n = name == null ? "" : name.strip().toLowerCase(Locale.ROOT);
         return switch (n) {
@@ -39,7 +52,13 @@ public record Body(String name, Ellipsoid ellipsoid, boolean isEarth) {
         };
     }
 
-    /** A spherical body of {@code radiusMeters} other than the Earth (no sun positions by date and time). */
+    /**
+     * A spherical body of {@code radiusMeters} other than the Earth (no sun positions by date and time).
+     *
+     * @param radiusMeters the sphere's radius in metres; positive and finite
+     * @return a body without sun positions by date and time
+     * @throws IllegalArgumentException when the radius is not positive and finite
+     */
     public static Body sphere(double radiusMeters) {
         if (!(radiusMeters > 0) || Double.isInfinite(radiusMeters)) {
             throw new IllegalArgumentException("body radius must be a positive number of metres, got "
@@ -49,7 +68,7 @@ public record Body(String name, Ellipsoid ellipsoid, boolean isEarth) {
                 false);
     }
 
-    /** @return the mean radius in metres */
+    /** {@return the mean radius in metres} */
     public double radiusMeters() {
         return ellipsoid.meanRadius();
     }
@@ -57,6 +76,7 @@ public record Body(String name, Ellipsoid ellipsoid, boolean isEarth) {
     /**
      * Returns this body when the sun can be placed in its sky from a date and time.
      *
+     * @return this body
      * @throws IllegalArgumentException naming the body and what to do instead
      */
     public Body requireSunByDateAndTime() {

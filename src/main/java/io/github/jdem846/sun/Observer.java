@@ -26,6 +26,14 @@ public record Observer(double heightMeters, double pressureMillibars, double tem
     /** At sea level in the International Standard Atmosphere (1013.25 mbar, 15 °C), ΔT estimated. */
     public static final Observer SEA_LEVEL = atHeight(0);
 
+    /**
+     * Checks the ranges given in the record's description.
+     *
+     * @param heightMeters height above sea level, in metres; −500 to 20 000
+     * @param pressureMillibars mean air pressure, in millibars (hPa); above 0 and at most 2000
+     * @param temperatureCelsius mean air temperature, in °C; −100 to 100
+     * @param deltaTSeconds ΔT in seconds, or empty for the estimate for the date
+     */
     public Observer {
         if (!(heightMeters >= -500 && heightMeters <= 20_000)) {
             throw new IllegalArgumentException("observer height must be between -500 and 20000 m, got "
@@ -51,6 +59,9 @@ public record Observer(double heightMeters, double pressureMillibars, double tem
     /**
      * An observer at {@code heightMeters} in the International Standard Atmosphere: pressure
      * 1013.25·(1 − 2.25577·10⁻⁵·h)^5.25588 mbar and temperature 15 − 0.0065·h °C; ΔT estimated.
+     *
+     * @param heightMeters height above sea level in metres, −500 to 20 000
+     * @return the observer at that height, with the standard atmosphere's pressure and temperature there
      */
     public static Observer atHeight(double heightMeters) {
         double h = heightMeters;
@@ -59,22 +70,37 @@ public record Observer(double heightMeters, double pressureMillibars, double tem
         return new Observer(h, pressure, temperature, OptionalDouble.empty());
     }
 
-    /** A copy with another air pressure in millibars. */
+    /**
+     * A copy with another air pressure in millibars.
+     *
+     * @param millibars the mean air pressure, above 0 and at most 2000
+     * @return a new observer; this one is unchanged
+     */
     public Observer withPressure(double millibars) {
         return new Observer(heightMeters, millibars, temperatureCelsius, deltaTSeconds);
     }
 
-    /** A copy with another air temperature in °C. */
+    /**
+     * A copy with another air temperature in °C.
+     *
+     * @param celsius the mean air temperature, −100 to 100
+     * @return a new observer; this one is unchanged
+     */
     public Observer withTemperature(double celsius) {
         return new Observer(heightMeters, pressureMillibars, celsius, deltaTSeconds);
     }
 
-    /** A copy with a known ΔT in seconds. */
+    /**
+     * A copy with a known ΔT in seconds.
+     *
+     * @param seconds ΔT = TT − UT, in seconds
+     * @return a new observer; this one is unchanged
+     */
     public Observer withDeltaT(double seconds) {
         return new Observer(heightMeters, pressureMillibars, temperatureCelsius, OptionalDouble.of(seconds));
     }
 
-    /** @return true when ΔT is estimated from the date rather than given */
+    /** {@return true when ΔT is estimated from the date rather than given} */
     public boolean isDeltaTEstimated() {
         return deltaTSeconds.isEmpty();
     }
@@ -82,6 +108,8 @@ public record Observer(double heightMeters, double pressureMillibars, double tem
     /**
      * ΔT in seconds for the given (UTC) date: the given value, or the estimate for the date.
      *
+     * @param utcDate the date, in UTC, the estimate is made for
+     * @return ΔT in seconds
      * @throws IllegalArgumentException when ΔT was not given and the date is outside the estimate's years
      */
     public double deltaTSecondsFor(LocalDate utcDate) {

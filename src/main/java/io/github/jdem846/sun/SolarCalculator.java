@@ -25,6 +25,11 @@ public final class SolarCalculator {
     /**
      * The topocentric sun (refraction included) at {@code time} seen from ({@code latitude}, {@code longitude}).
      *
+     * @param time the instant, in any zone
+     * @param latitude degrees north, WGS 84, in [−90, 90]
+     * @param longitude degrees east, WGS 84, in [−180, 180]
+     * @param observer height, air and ΔT of the observer
+     * @return the sun's azimuth (from true north) and zenith angle
      * @throws IllegalArgumentException for a place off the globe, a year outside −2000…6000, or ΔT that must be
      *                                  given (see {@link Observer#deltaTSecondsFor})
      */
@@ -32,7 +37,14 @@ public final class SolarCalculator {
         return SunAtInstant.of(time, observer).position(latitude, longitude);
     }
 
-    /** The sun at {@code time} seen from {@code place}. */
+    /**
+     * The sun at {@code time} seen from {@code place}.
+     *
+     * @param time the instant, in any zone
+     * @param place where the sun is seen from
+     * @param observer height, air and ΔT of the observer
+     * @return the sun's azimuth (from true north) and zenith angle
+     */
     public static SunPosition position(ZonedDateTime time, LatLon place, Observer observer) {
         return position(time, place.latitude(), place.longitude(), observer);
     }
@@ -41,6 +53,11 @@ public final class SolarCalculator {
      * Sunrise, transit and sunset at {@code place} on the calendar day of {@code day} in its own zone, returned in
      * that zone. With a zone far from the place's solar time (e.g. UTC at 179° E), an event may belong to the
      * neighbouring solar day; write the time in the place's own zone to get that day's events.
+     *
+     * @param day any time on the day; its zone chooses the calendar day and the zone of the results
+     * @param place where the sun is seen from
+     * @param observer height, air and ΔT of the observer
+     * @return the day's kind (regular, polar day or night) and its events
      */
     public static SunEvents events(ZonedDateTime day, LatLon place, Observer observer) {
         Objects.requireNonNull(day, "day");

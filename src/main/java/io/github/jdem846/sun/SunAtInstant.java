@@ -35,6 +35,9 @@ public final class SunAtInstant {
     /**
      * The sun at {@code time} for {@code observer}.
      *
+     * @param time the instant, in any zone
+     * @param observer height, air and ΔT of the observer
+     * @return the sun at that instant, ready for positions at any place
      * @throws IllegalArgumentException when the year is outside the SPA's −2000 to 6000, or ΔT is not given and
      *                                  cannot be estimated for the date
      */
@@ -49,16 +52,17 @@ public final class SunAtInstant {
         return new SunAtInstant(time, observer);
     }
 
-    /** @return the instant, in the zone it was given in */
+    /** {@return the instant, in the zone it was given in} */
     public ZonedDateTime time() {
         return time;
     }
 
+    /** {@return the observer the positions are computed for} */
     public Observer observer() {
         return observer;
     }
 
-    /** @return ΔT used, in seconds (given or estimated) */
+    /** {@return ΔT used, in seconds (given or estimated)} */
     public double deltaTSeconds() {
         return deltaTSeconds;
     }
@@ -67,6 +71,9 @@ public final class SunAtInstant {
      * The sun seen from latitude {@code latitude} and longitude {@code longitude} (degrees, WGS 84, north and east
      * positive).
      *
+     * @param latitude degrees north
+     * @param longitude degrees east
+     * @return the sun's azimuth (from true north) and zenith angle
      * @throws IllegalArgumentException when the latitude is outside [−90, 90] or the longitude outside
      *                                  [−180, 180] (wrap grid longitudes with {@link LatLon#wrapLongitude})
      */
@@ -77,7 +84,12 @@ public final class SunAtInstant {
         return new SunPosition(p.azimuth(), Math.max(0, Math.min(180, p.zenithAngle())));
     }
 
-    /** The sun seen from {@code place}. */
+    /**
+     * The sun seen from {@code place}.
+     *
+     * @param place where the sun is seen from
+     * @return the sun's azimuth (from true north) and zenith angle
+     */
     public SunPosition position(LatLon place) {
         return position(place.latitude(), place.longitude());
     }

@@ -28,6 +28,14 @@ public record SunEvents(DayKind kind, Optional<ZonedDateTime> sunrise, ZonedDate
         POLAR_NIGHT
     }
 
+    /**
+     * Checks that the kind and the three times are given.
+     *
+     * @param kind regular day, polar day or polar night
+     * @param sunrise the sunrise, empty unless {@link DayKind#REGULAR}
+     * @param transit the sun's transit across the local meridian
+     * @param sunset the sunset, empty unless {@link DayKind#REGULAR}
+     */
     public SunEvents {
         Objects.requireNonNull(kind, "kind");
         Objects.requireNonNull(sunrise, "sunrise");

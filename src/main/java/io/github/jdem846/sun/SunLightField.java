@@ -29,8 +29,13 @@ public final class SunLightField implements LightField {
     /**
      * The sun over {@code grid} at {@code time}.
      *
-     * @param place    where to compute the sun when the grid's CRS cannot give latitude/longitude, or {@code null}
+     * @param grid the grid the light falls on; without {@code place}, its CRS places the cells on the globe
+     * @param time the instant, in any zone
+     * @param place    where to compute one sun for the whole grid, or {@code null} to place the cells by the CRS
      * @param tileSize cells per tile edge for a sun per tile; 0 for one sun at the grid's centre
+     * @param observer height, air and ΔT of the observer
+     * @return one sun seen from {@code place}, or the suns of the grid's cells (one, or one per tile) turned into
+     *     the grid's frame
      * @throws IllegalArgumentException when neither the CRS nor {@code place} gives a position (the message says to
      *                                  pass {@code --sun-at LAT,LON})
      */
@@ -73,7 +78,7 @@ public final class SunLightField implements LightField {
         return uniform;
     }
 
-    /** @return the sun on the sky at the grid's centre (for the twilight fade and for reporting) */
+    /** {@return the sun on the sky at the grid's centre (for the twilight fade and for reporting)} */
     public SunPosition centralSun() {
         return centralSun;
     }

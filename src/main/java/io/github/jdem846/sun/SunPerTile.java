@@ -55,6 +55,13 @@ public final class SunPerTile {
      * The sun for each {@code tileWidth × tileHeight} tile of {@code grid} (the last row and column of tiles may
      * be partial), seen from the tile's centre at {@code time}.
      *
+     * @param grid the grid the tiles cover
+     * @param locator latitude and longitude of a grid position
+     * @param tileWidth cells per tile across, positive
+     * @param tileHeight cells per tile down, positive
+     * @param time the instant, in any zone
+     * @param observer height, air and ΔT of the observer
+     * @return the suns, one per tile
      * @throws IllegalArgumentException for non-positive tile sizes, a locator that gives no valid latitude and
      *                                  longitude (the message names the tile), or a time the SPA cannot take
      */
@@ -88,13 +95,29 @@ public final class SunPerTile {
         return new SunPerTile(grid.width(), grid.height(), tileWidth, tileHeight, suns, convergence);
     }
 
-    /** One sun per row of cells (tiles as wide as the grid and one row high). */
+    /**
+     * One sun per row of cells (tiles as wide as the grid and one row high).
+     *
+     * @param grid the grid the rows cover
+     * @param locator latitude and longitude of a grid position
+     * @param time the instant, in any zone
+     * @param observer height, air and ΔT of the observer
+     * @return the suns, one per row
+     */
     public static SunPerTile perRow(GridGeometry grid, LatLonLocator locator, ZonedDateTime time,
                                     Observer observer) {
         return compute(grid, locator, grid.width(), 1, time, observer);
     }
 
-    /** One sun for the whole grid, seen from its centre (the original's default). */
+    /**
+     * One sun for the whole grid, seen from its centre (the original's default).
+     *
+     * @param grid the grid
+     * @param locator latitude and longitude of a grid position
+     * @param time the instant, in any zone
+     * @param observer height, air and ΔT of the observer
+     * @return one sun, used for every cell
+     */
     public static SunPerTile single(GridGeometry grid, LatLonLocator locator, ZonedDateTime time,
                                     Observer observer) {
         return compute(grid, locator, grid.width(), grid.height(), time, observer);
@@ -133,33 +156,55 @@ public final class SunPerTile {
         return (a + b - 1) / b;
     }
 
+    /** {@return cells per tile across} */
     public int tileWidth() {
         return tileWidth;
     }
 
+    /** {@return cells per tile down (the last row of tiles may be shorter)} */
     public int tileHeight() {
         return tileHeight;
     }
 
+    /** {@return the number of tile columns} */
     public int tilesAcross() {
         return tilesAcross;
     }
 
+    /** {@return the number of tile rows} */
     public int tilesDown() {
         return tilesDown;
     }
 
-    /** The sun on the sky (azimuth from true north) of tile ({@code tileCol}, {@code tileRow}). */
+    /**
+     * The sun on the sky (azimuth from true north) of tile ({@code tileCol}, {@code tileRow}).
+     *
+     * @param tileCol tile column, from 0 at the left
+     * @param tileRow tile row, from 0 at the top
+     * @return the tile's sun
+     */
     public SunPosition forTile(int tileCol, int tileRow) {
         return suns[tileIndex(tileCol, tileRow)];
     }
 
-    /** The sun on the sky (azimuth from true north) of the tile that holds cell ({@code col}, {@code row}). */
+    /**
+     * The sun on the sky (azimuth from true north) of the tile that holds cell ({@code col}, {@code row}).
+     *
+     * @param col cell column, from 0 at the left
+     * @param row cell row, from 0 at the top
+     * @return the sun of the cell's tile
+     */
     public SunPosition forCell(int col, int row) {
         return suns[cellIndex(col, row)];
     }
 
-    /** The light of tile ({@code tileCol}, {@code tileRow}) in the grid's frame (azimuth from grid-up). */
+    /**
+     * The light of tile ({@code tileCol}, {@code tileRow}) in the grid's frame (azimuth from grid-up).
+     *
+     * @param tileCol tile column, from 0 at the left
+     * @param tileRow tile row, from 0 at the top
+     * @return the light in the grid's frame, the sun's elevation unchanged
+     */
     public LightDirection lightForTile(int tileCol, int tileRow) {
         return lights[tileIndex(tileCol, tileRow)];
     }
@@ -167,12 +212,22 @@ public final class SunPerTile {
     /**
      * The light of the tile that holds cell ({@code col}, {@code row}) in the grid's frame (azimuth from grid-up),
      * for the hillshade and shadow stages; no allocation.
+     *
+     * @param col cell column, from 0 at the left
+     * @param row cell row, from 0 at the top
+     * @return the light of the cell's tile, the same instance on every call
      */
     public LightDirection lightForCell(int col, int row) {
         return lights[cellIndex(col, row)];
     }
 
-    /** The grid convergence γ of tile ({@code tileCol}, {@code tileRow}): true bearing of grid-up, degrees. */
+    /**
+     * The grid convergence γ of tile ({@code tileCol}, {@code tileRow}): true bearing of grid-up, degrees.
+     *
+     * @param tileCol tile column, from 0 at the left
+     * @param tileRow tile row, from 0 at the top
+     * @return the convergence in degrees, clockwise from true north to grid-up; 0 where grid-up is north
+     */
     public double gridConvergenceDegrees(int tileCol, int tileRow) {
         return convergence[tileIndex(tileCol, tileRow)];
     }
@@ -197,7 +252,7 @@ public final class SunPerTile {
         }
     }
 
-    /** @return the largest minus the smallest elevation over all tiles, in degrees */
+    /** {@return the largest minus the smallest elevation over all tiles, in degrees} */
     public double elevationSpreadDegrees() {
         double min = Double.POSITIVE_INFINITY;
         double max = Double.NEGATIVE_INFINITY;
@@ -208,7 +263,7 @@ public final class SunPerTile {
         return max - min;
     }
 
-    /** @return the narrowest arc of azimuths that holds every tile's sun, in degrees (360 minus the widest gap) */
+    /** {@return the narrowest arc of azimuths that holds every tile's sun, in degrees (360 minus the widest gap)} */
     public double azimuthSpreadDegrees() {
         double[] az = Arrays.stream(suns).mapToDouble(SunPosition::azimuthDegrees).sorted().toArray();
         double widestGap = az[0] + 360 - az[az.length - 1];

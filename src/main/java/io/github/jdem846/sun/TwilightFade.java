@@ -22,6 +22,12 @@ public record TwilightFade(double lightZenithDegrees, double darkZenithDegrees) 
     /** The original's 90° → 108°. */
     public static final TwilightFade ORIGINAL = new TwilightFade(90, 108);
 
+    /**
+     * Checks that 0 ≤ light zenith &lt; dark zenith ≤ 180.
+     *
+     * @param lightZenithDegrees the zenith angle where darkening starts (90: the sun on the horizon)
+     * @param darkZenithDegrees the zenith angle where it is complete (108: end of astronomical twilight)
+     */
     public TwilightFade {
         if (!(lightZenithDegrees >= 0 && darkZenithDegrees <= 180 && lightZenithDegrees < darkZenithDegrees)) {
             throw new IllegalArgumentException("twilight needs 0 <= light zenith < dark zenith <= 180 degrees, got "
@@ -32,6 +38,9 @@ public record TwilightFade(double lightZenithDegrees, double darkZenithDegrees) 
     /**
      * How much is subtracted from the illumination at zenith angle {@code zenithDegrees}: 0 in daylight, rising
      * linearly to 2 at the dark zenith, 2 beyond. NaN for a NaN zenith.
+     *
+     * @param zenithDegrees the sun's zenith angle in degrees
+     * @return the darkening, in [0, 2], or NaN
      */
     public double darkening(double zenithDegrees) {
         if (Double.isNaN(zenithDegrees)) {
@@ -49,6 +58,10 @@ public record TwilightFade(double lightZenithDegrees, double darkZenithDegrees) 
     /**
      * The illumination {@code d} faded for a sun at zenith angle {@code zenithDegrees}, clamped at −1. A NaN
      * {@code d} (no data) stays NaN.
+     *
+     * @param d the illumination, in [−1, 1], or NaN for no data
+     * @param zenithDegrees the sun's zenith angle in degrees
+     * @return the faded illumination, in [−1, 1], or NaN
      */
     public double apply(double d, double zenithDegrees) {
         return Math.max(-1, d - darkening(zenithDegrees));

@@ -36,6 +36,8 @@ public final class ZonedTimeParser {
     /**
      * Parses {@code text} (see the class comment).
      *
+     * @param text the date and time as written by the user
+     * @return the date and time in the zone written or implied
      * @throws IllegalArgumentException with a message that says what is wrong and what to write
      */
     public static ZonedDateTime parse(String text) {

@@ -8,11 +8,18 @@ import java.util.Objects;
  *
  * @param tile where it goes
  * @param png  the whole PNG file (the array is shared, not copied)
+ * @serial exclude
  */
 public record EncodedTile(WebMercatorTile tile, byte[] png) implements Serializable {
 
     private static final long serialVersionUID = 1L;
 
+    /**
+     * Checks that the tile and its bytes are given.
+     *
+     * @param tile where it goes
+     * @param png the whole PNG file (the array is shared, not copied)
+     */
     public EncodedTile {
         Objects.requireNonNull(tile, "tile");
         Objects.requireNonNull(png, "png");

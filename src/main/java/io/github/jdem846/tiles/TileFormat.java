@@ -13,6 +13,8 @@ public enum TileFormat {
     /**
      * The format for {@code output}.
      *
+     * @param output the archive's or directory's path
+     * @return {@link #PMTILES} for a {@code .pmtiles} name, else the directory format
      * @throws IllegalArgumentException for a {@code .mbtiles} name, which is not written
      */
     public static TileFormat of(Path output) {

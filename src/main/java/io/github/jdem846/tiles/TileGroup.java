@@ -14,21 +14,31 @@ import java.util.List;
  * @param minY first row (north)
  * @param maxX last column (inclusive)
  * @param maxY last row (inclusive)
+ * @serial exclude
  */
 public record TileGroup(int z, int minX, int minY, int maxX, int maxY) implements Serializable {
 
     private static final long serialVersionUID = 1L;
 
+    /**
+     * Checks that the tiles exist at zoom {@code z}.
+     *
+     * @param z zoom
+     * @param minX first column
+     * @param minY first row (north)
+     * @param maxX last column (inclusive)
+     * @param maxY last row (inclusive)
+     */
     public TileGroup {
         new TileRange(z, minX, minY, maxX, maxY); // checks the bounds
     }
 
-    /** @return its tiles, row by row from the north-west */
+    /** {@return its tiles, row by row from the north-west} */
     public List<WebMercatorTile> tiles() {
         return new TileRange(z, minX, minY, maxX, maxY).tiles();
     }
 
-    /** @return how many tiles it holds */
+    /** {@return how many tiles it holds} */
     public int size() {
         return (maxX - minX + 1) * (maxY - minY + 1);
     }

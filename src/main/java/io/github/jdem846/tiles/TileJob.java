@@ -51,6 +51,18 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
     /** Deflate level of the tiles by default: zlib's default, a good size for serving. */
     public static final int DEFAULT_PNG_COMPRESSION = 6;
 
+    /**
+     * Checks that the parts are given and that the PNG compression level is 0 to 9.
+     *
+     * @param input the DEM file, or files read as one grid
+     * @param zooms the zoom levels
+     * @param scene the stages and their settings (its light, tint range and fade are set from {@code sun} and the DEM)
+     * @param sun the light: fixed, or the sun at a date and time seen from the DEM's centre (or {@link Sun#place()}),
+     *     the same for every tile; a sun per tile is not allowed
+     * @param execution tiles rendered at once ({@link RenderSettings#parallelism()}) and the renderer's tile size; with
+     *     a shared pool ({@link RenderSettings#withPool}) every tile renders on it. The tiles do not depend on them
+     * @param pngCompression deflate level of the tiles, 0 to 9
+     */
     public TileJob {
         Objects.requireNonNull(input, "input");
         Objects.requireNonNull(zooms, "zooms");
@@ -62,38 +74,70 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
         }
     }
 
-    /** Tiles of {@code dem} at {@code zooms} with the original's scene and light, on every processor. */
+    /**
+     * Tiles of {@code dem} at {@code zooms} with the original's scene and light, on every processor.
+     *
+     * @param dem the DEM file
+     * @param zooms the zoom levels
+     * @return the job
+     */
     public static TileJob of(Path dem, ZoomRange zooms) {
         return of(DemInput.of(dem), zooms);
     }
 
-    /** Tiles of {@code dem} (one file or several read as one grid) at {@code zooms}, with the defaults. */
+    /**
+     * Tiles of {@code dem} (one file or several read as one grid) at {@code zooms}, with the defaults.
+     *
+     * @param dem the file or files
+     * @param zooms the zoom levels
+     * @return the job
+     */
     public static TileJob of(DemInput dem, ZoomRange zooms) {
         return new TileJob(dem, zooms, Scene.defaults(), Sun.ORIGINAL_DEFAULT, RenderSettings.defaults(),
                 DEFAULT_PNG_COMPRESSION);
     }
 
-    /** @return a copy with other zoom levels */
+    /**
+     * {@return a copy with other zoom levels}
+     *
+     * @param value the zoom levels
+     */
     public TileJob withZooms(ZoomRange value) {
         return new TileJob(input, value, scene, sun, execution, pngCompression);
     }
 
-    /** @return a copy with another scene */
+    /**
+     * {@return a copy with another scene}
+     *
+     * @param value the scene
+     */
     public TileJob withScene(Scene value) {
         return new TileJob(input, zooms, value, sun, execution, pngCompression);
     }
 
-    /** @return a copy with another light */
+    /**
+     * {@return a copy with another light}
+     *
+     * @param value the sun
+     */
     public TileJob withSun(Sun value) {
         return new TileJob(input, zooms, scene, value, execution, pngCompression);
     }
 
-    /** @return a copy with other threads and renderer tile size */
+    /**
+     * {@return a copy with other threads and renderer tile size}
+     *
+     * @param value threads and renderer tile size
+     */
     public TileJob withExecution(RenderSettings value) {
         return new TileJob(input, zooms, scene, sun, value, pngCompression);
     }
 
-    /** @return a copy with another PNG deflate level */
+    /**
+     * {@return a copy with another PNG deflate level}
+     *
+     * @param value the deflate level, 0 to 9
+     */
     public TileJob withPngCompression(int value) {
         return new TileJob(input, zooms, scene, sun, execution, value);
     }
@@ -103,6 +147,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * does not exist yet or is empty. Everything is written to a hidden file or directory beside it first and
      * renamed into place at the end; a failure or an interrupt leaves nothing.
      *
+     * @param output the {@code .pmtiles} file or the directory
      * @param listener told of progress ("statistics": rows of the DEM streamed for its range, then "tiles": tiles
      *                 done, of all), notices and the sun computed
      * @return what was written
@@ -138,6 +183,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * Checks, before any work, that the pyramid can be written to {@code output} ({@link TileSink#open}) and that
      * it is none of the input files.
      *
+     * @param output the {@code .pmtiles} file or the directory
      * @return the format {@code output} names
      * @throws io.github.jdem846.output.OutputOverwritesInputException when {@code output} is an input file or its
      *                                  sidecar, however spelt (a symbolic link, a relative path)

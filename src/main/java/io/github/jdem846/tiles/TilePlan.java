@@ -73,8 +73,10 @@ public final class TilePlan {
      * Reads the DEM's headers and measures its elevation range (one pass over its cells): for the process that
      * hands out the groups.
      *
+     * @param job the tile job
      * @param listener told of the DEM's notices, the rows of the file streamed for its range (stage "statistics"),
      *                 the sun computed and the end of the "read" phase
+     * @return the plan
      * @throws IOException              when the DEM cannot be read or holds no elevations (naming it)
      * @throws IllegalArgumentException when the job's settings do not make sense for map tiles ({@link
      *                                  TileJob#requireTileable()}) or the DEM's CRS is unknown
@@ -100,6 +102,9 @@ public final class TilePlan {
      * with {@link #prepare(TileJob, JobListener)}): reads only the DEM's headers. Its tiles are the same bytes as
      * those of that plan.
      *
+     * @param job the tile job
+     * @param range the elevation range of the whole DEM
+     * @return the plan
      * @throws IOException              when the DEM's headers cannot be read
      * @throws IllegalArgumentException as {@link #prepare(TileJob, JobListener)}, or for an empty range
      */
@@ -110,6 +115,12 @@ public final class TilePlan {
     /**
      * {@link #prepare(TileJob, ElevationStatistics)}, telling {@code listener} of the sun computed (a driver that
      * measured the range in parts reports it).
+     *
+     * @param job the tile job
+     * @param range the elevation range of the whole DEM
+     * @param listener told of the sun computed
+     * @return the plan
+     * @throws IOException when the DEM's headers cannot be read
      */
     public static TilePlan prepare(TileJob job, ElevationStatistics range, JobListener listener) throws IOException {
         Objects.requireNonNull(job, "job");
@@ -141,22 +152,22 @@ public final class TilePlan {
         return finest == Integer.MAX_VALUE ? null : Overview.lazy(job.input(), finest);
     }
 
-    /** @return the job planned */
+    /** {@return the job planned} */
     public TileJob job() {
         return job;
     }
 
-    /** @return the whole DEM's elevations, which set the tint and the cast-shadow halos */
+    /** {@return the whole DEM's elevations, which set the tint and the cast-shadow halos} */
     public ElevationStatistics range() {
         return range;
     }
 
-    /** @return every group of tiles, the deepest zoom's first */
+    /** {@return every group of tiles, the deepest zoom's first} */
     public List<TileGroup> groups() {
         return groups;
     }
 
-    /** @return how many tiles the zoom levels' ranges hold, with data or not */
+    /** {@return how many tiles the zoom levels' ranges hold, with data or not} */
     public long tileCount() {
         long n = 0;
         for (Level level : levels) {
@@ -168,6 +179,7 @@ public final class TilePlan {
     /**
      * Renders the tiles of {@code group} that hold data, each encoded as PNG.
      *
+     * @param group one of {@link #groups()}
      * @return the tiles with data, in the group's order (row by row); empty when none holds data
      * @throws IOException              when the DEM cannot be read
      * @throws IllegalArgumentException when {@code group} is not one of {@link #groups()}' tiles
@@ -215,7 +227,7 @@ public final class TilePlan {
         return level;
     }
 
-    /** @return what an archive's header and metadata say about these tiles */
+    /** {@return what an archive's header and metadata say about these tiles} */
     public TileSink.TileSetInfo tileSetInfo() {
         String name = job.input().first().getFileName().toString();
         return new TileSink.TileSetInfo(name, "Shaded relief of " + name + " by jdem846", job.zooms(),
@@ -225,8 +237,11 @@ public final class TilePlan {
     /**
      * The report of a finished run.
      *
+     * @param output where the tiles were written
+     * @param format the format they were written in
      * @param writtenByZoom tiles written at each zoom (a zoom left out wrote none)
      * @param bytes         PNG bytes written
+     * @return the report
      */
     public TileReport report(Path output, TileFormat format, Map<Integer, Long> writtenByZoom, long bytes) {
         List<TileReport.Zoom> zooms = new ArrayList<>();

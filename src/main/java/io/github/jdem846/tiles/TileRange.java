@@ -15,6 +15,15 @@ import java.util.List;
  */
 public record TileRange(int z, int minX, int minY, int maxX, int maxY) {
 
+    /**
+     * Checks that the range is not empty and its tiles exist at zoom {@code z}.
+     *
+     * @param z zoom
+     * @param minX first column
+     * @param minY first row (north)
+     * @param maxX last column
+     * @param maxY last row (south)
+     */
     public TileRange {
         int n = 1 << z;
         if (minX < 0 || minY < 0 || maxX >= n || maxY >= n || minX > maxX || minY > maxY) {
@@ -28,6 +37,9 @@ public record TileRange(int z, int minX, int minY, int maxX, int maxY) {
      * does not bring in the tile beyond it. Latitudes beyond ±{@link io.github.jdem846.geo.WebMercator#MAX_LATITUDE}
      * are clamped; longitudes are taken as they are (a box must not cross the antimeridian).
      *
+     * @param box the area, degrees
+     * @param z zoom
+     * @return the range of tiles
      * @throws IllegalArgumentException when the box is empty or not finite
      */
     public static TileRange covering(LatLonBox box, int z) {
@@ -45,17 +57,21 @@ public record TileRange(int z, int minX, int minY, int maxX, int maxY) {
         return new TileRange(z, minX, minY, Math.max(minX, maxX), Math.max(minY, maxY));
     }
 
-    /** @return columns × rows */
+    /** {@return columns × rows} */
     public long count() {
         return (long) (maxX - minX + 1) * (maxY - minY + 1);
     }
 
-    /** @return whether the tile is in this range */
+    /**
+     * {@return whether the tile is in this range}
+     *
+     * @param t a tile of any zoom
+     */
     public boolean contains(WebMercatorTile t) {
         return t.z() == z && t.x() >= minX && t.x() <= maxX && t.y() >= minY && t.y() <= maxY;
     }
 
-    /** @return every tile, row by row from the north-west */
+    /** {@return every tile, row by row from the north-west} */
     public List<WebMercatorTile> tiles() {
         List<WebMercatorTile> out = new ArrayList<>((int) Math.min(Integer.MAX_VALUE - 8, count()));
         for (int y = minY; y <= maxY; y++) {

@@ -16,6 +16,8 @@ public interface TileSink extends AutoCloseable {
      * Opens the sink {@link TileFormat#of} {@code output} names: a {@code .pmtiles} archive, or else a directory
      * that does not exist yet or is empty.
      *
+     * @param output the {@code .pmtiles} file or the directory
+     * @return the open sink
      * @throws IOException              when the output cannot be written there (naming it and why)
      * @throws IllegalArgumentException for a format that is not written ({@code .mbtiles})
      */
@@ -29,10 +31,21 @@ public interface TileSink extends AutoCloseable {
         }
     }
 
-    /** Takes one encoded tile. */
+    /**
+     * Takes one encoded tile.
+     *
+     * @param tile where the tile goes
+     * @param png the whole PNG file
+     * @throws IOException when it cannot be written
+     */
     void write(WebMercatorTile tile, byte[] png) throws IOException;
 
-    /** Moves the finished tile set into place. */
+    /**
+     * Moves the finished tile set into place.
+     *
+     * @param info the name, description, zooms and bounds of the set (the archive keeps them in its metadata)
+     * @throws IOException when the set cannot be moved into place
+     */
     void commit(TileSetInfo info) throws IOException;
 
     /** Deletes whatever was staged and not committed. */

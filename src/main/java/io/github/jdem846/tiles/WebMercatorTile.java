@@ -12,6 +12,7 @@ import io.github.jdem846.geo.WebMercator;
  * @param z zoom, 0 to {@link #MAX_ZOOM}
  * @param x column, 0 to 2^z − 1
  * @param y row, 0 to 2^z − 1
+ * @serial exclude
  */
 public record WebMercatorTile(int z, int x, int y) implements java.io.Serializable {
 
@@ -23,6 +24,13 @@ public record WebMercatorTile(int z, int x, int y) implements java.io.Serializab
     /** Deepest zoom: its world, 256·2^22 pixels wide, still fits an int (a 9.3 mm pixel at the equator). */
     public static final int MAX_ZOOM = 22;
 
+    /**
+     * Checks that the zoom is 0 to {@link #MAX_ZOOM} and the tile exists at that zoom.
+     *
+     * @param z zoom, 0 to {@link #MAX_ZOOM}
+     * @param x column, 0 to 2^z − 1
+     * @param y row, 0 to 2^z − 1
+     */
     public WebMercatorTile {
         if (z < 0 || z > MAX_ZOOM) {
             throw new IllegalArgumentException("zoom must be 0 to " + MAX_ZOOM + ", got " + z);
@@ -37,6 +45,11 @@ public record WebMercatorTile(int z, int x, int y) implements java.io.Serializab
     /**
      * The tile at zoom {@code z} that holds the point: longitude wrapped into [−180, 180), latitude clamped to
      * ±{@link WebMercator#MAX_LATITUDE}; a point on a tile edge belongs to the tile east or south of it.
+     *
+     * @param latitude degrees north
+     * @param longitude degrees east
+     * @param z zoom, 0 to {@link #MAX_ZOOM}
+     * @return the tile
      */
     public static WebMercatorTile containing(double latitude, double longitude, int z) {
         if (!Double.isFinite(latitude) || !Double.isFinite(longitude)) {
@@ -60,43 +73,47 @@ public record WebMercatorTile(int z, int x, int y) implements java.io.Serializab
         return (WebMercator.HALF_WORLD - WebMercator.y(latitude)) / (2 * WebMercator.HALF_WORLD) * (1 << z);
     }
 
-    /** @return the size in Web Mercator metres of one pixel at zoom z (156 543.03… m at zoom 0) */
+    /**
+     * {@return the size in Web Mercator metres of one pixel at zoom z (156 543.03… m at zoom 0)}
+     *
+     * @param z zoom
+     */
     public static double pixelSize(int z) {
         return 2 * WebMercator.HALF_WORLD / ((double) SIZE * (1L << checkZoom(z)));
     }
 
-    /** @return Web Mercator x of the west edge, metres */
+    /** {@return Web Mercator x of the west edge, metres} */
     public double westX() {
         return edgeX(x);
     }
 
-    /** @return Web Mercator x of the east edge, metres */
+    /** {@return Web Mercator x of the east edge, metres} */
     public double eastX() {
         return edgeX(x + 1);
     }
 
-    /** @return Web Mercator y of the north edge, metres */
+    /** {@return Web Mercator y of the north edge, metres} */
     public double northY() {
         return edgeY(y);
     }
 
-    /** @return Web Mercator y of the south edge, metres */
+    /** {@return Web Mercator y of the south edge, metres} */
     public double southY() {
         return edgeY(y + 1);
     }
 
-    /** @return the tile's edges in latitude and longitude, degrees */
+    /** {@return the tile's edges in latitude and longitude, degrees} */
     public LatLonBox latLonBounds() {
         return new LatLonBox(WebMercator.latitude(southY()), WebMercator.latitude(northY()),
                 WebMercator.longitude(westX()), WebMercator.longitude(eastX()));
     }
 
-    /** @return the row in the TMS scheme (counted from the south), as MBTiles stores it */
+    /** {@return the row in the TMS scheme (counted from the south), as MBTiles stores it} */
     public int tmsY() {
         return (1 << z) - 1 - y;
     }
 
-    /** @return the tile one zoom out that contains this one (itself at zoom 0) */
+    /** {@return the tile one zoom out that contains this one (itself at zoom 0)} */
     public WebMercatorTile parent() {
         return z == 0 ? this : new WebMercatorTile(z - 1, x >> 1, y >> 1);
     }

@@ -8,6 +8,12 @@ package io.github.jdem846.tiles;
  */
 public record ZoomRange(int min, int max) {
 
+    /**
+     * Checks that 0 ≤ min ≤ max ≤ {@link WebMercatorTile#MAX_ZOOM}.
+     *
+     * @param min the first zoom, 0 to {@link WebMercatorTile#MAX_ZOOM}
+     * @param max the last zoom, {@code min} to {@link WebMercatorTile#MAX_ZOOM}
+     */
     public ZoomRange {
         if (min < 0 || max > WebMercatorTile.MAX_ZOOM || min > max) {
             throw new IllegalArgumentException("zoom levels must be 0 to " + WebMercatorTile.MAX_ZOOM
@@ -18,6 +24,8 @@ public record ZoomRange(int min, int max) {
     /**
      * Parses {@code "MIN-MAX"} or a single level {@code "Z"}.
      *
+     * @param text the text, e.g. {@code "8-12"} or {@code "10"}
+     * @return the range
      * @throws IllegalArgumentException naming what is wrong
      */
     public static ZoomRange parse(String text) {
@@ -35,7 +43,7 @@ public record ZoomRange(int min, int max) {
         }
     }
 
-    /** @return how many levels */
+    /** {@return how many levels} */
     public int count() {
         return max - min + 1;
     }

@@ -29,7 +29,7 @@ public sealed interface ColorRamp permits StopRamp, SeaLandRamp, TopoBathyRamp, 
      */
     String DEFAULT_NAME = "hypsometric-bathymetric";
 
-    /** @return a short name for messages (the built-in name, or the colour file's name) */
+    /** {@return a short name for messages (the built-in name, or the colour file's name)} */
     String name();
 
     /**
@@ -82,12 +82,12 @@ public sealed interface ColorRamp permits StopRamp, SeaLandRamp, TopoBathyRamp, 
         return BuiltInRamps.named(name);
     }
 
-    /** @return the names of the built-in ramps, default first */
+    /** {@return the names of the built-in ramps, default first} */
     static List<String> names() {
         return BuiltInRamps.names();
     }
 
-    /** @return the default ramp, {@code hypsometric-bathymetric} (see {@link #DEFAULT_NAME}) */
+    /** {@return the default ramp, {@code hypsometric-bathymetric} (see {@link #DEFAULT_NAME})} */
     static ColorRamp defaultRamp() {
         return named(DEFAULT_NAME);
     }

@@ -13,6 +13,13 @@ import java.util.Objects;
  */
 public record ScaledRamp(ColorRamp ramp, TintScale scale) implements ColorRamp {
 
+    /**
+     * Checks that ramp and scale are given, and that the ramp is neither scaled already nor has stops at fixed
+     * elevations.
+     *
+     * @param ramp the ramp, with percent stops only
+     * @param scale how its range is spread
+     */
     public ScaledRamp {
         Objects.requireNonNull(ramp, "ramp");
         Objects.requireNonNull(scale, "scale");

@@ -15,6 +15,13 @@ import java.util.Objects;
  */
 public record SeaLandRamp(String name, StopRamp land, StopRamp sea) implements ColorRamp {
 
+    /**
+     * Checks that the name and both ramps are given.
+     *
+     * @param name a short name for messages
+     * @param land the ramp above sea level
+     * @param sea the ramp at and below sea level
+     */
     public SeaLandRamp {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(land, "land");

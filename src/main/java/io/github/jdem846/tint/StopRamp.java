@@ -25,6 +25,14 @@ import java.util.function.ToDoubleFunction;
 public record StopRamp(String name, List<ColorStop> stops, ColorSelection selection, int noDataArgb)
         implements ColorRamp {
 
+    /**
+     * Checks that the name and selection are given, and copies the stops, of which there must be at least one.
+     *
+     * @param name a short name for messages
+     * @param stops at least one stop (copied)
+     * @param selection how colours between stops are chosen
+     * @param noDataArgb the colour of no-data cells (NaN); {@code 0} = transparent
+     */
     public StopRamp {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(selection, "selection");
@@ -34,27 +42,43 @@ public record StopRamp(String name, List<ColorStop> stops, ColorSelection select
         }
     }
 
-    /** An interpolating ramp with transparent no-data. */
+    /**
+     * An interpolating ramp with transparent no-data.
+     *
+     * @param name the ramp's name, for messages
+     * @param stops the stops, at least one
+     * @return the ramp
+     */
     public static StopRamp of(String name, List<ColorStop> stops) {
         return new StopRamp(name, stops, ColorSelection.INTERPOLATE, Argb.TRANSPARENT);
     }
 
-    /** The same stops with another selection mode. */
+    /**
+     * The same stops with another selection mode.
+     *
+     * @param newSelection how a colour is picked between stops
+     * @return a new ramp; this one is unchanged
+     */
     public StopRamp withSelection(ColorSelection newSelection) {
         return new StopRamp(name, stops, newSelection, noDataArgb);
     }
 
-    /** The same stops with another no-data colour (non-premultiplied ARGB). */
+    /**
+     * The same stops with another no-data colour (non-premultiplied ARGB).
+     *
+     * @param argb the colour of no-data cells, 0xAARRGGBB
+     * @return a new ramp; this one is unchanged
+     */
     public StopRamp withNoDataColor(int argb) {
         return new StopRamp(name, stops, selection, argb);
     }
 
-    /** @return true when every stop is a percent of the range */
+    /** {@return true when every stop is a percent of the range} */
     public boolean isRelative() {
         return stops.stream().allMatch(s -> s.unit() == StopUnit.PERCENT);
     }
 
-    /** @return true when every stop is an elevation, so that binding does not depend on the range */
+    /** {@return true when every stop is an elevation, so that binding does not depend on the range} */
     public boolean isAbsolute() {
         return stops.stream().allMatch(s -> s.unit() == StopUnit.ABSOLUTE);
     }

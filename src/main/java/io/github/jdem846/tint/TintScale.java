@@ -39,9 +39,10 @@ public enum TintScale {
     }
 
     /**
+     * {@return the scaled position, in [0, 1]}
+     *
      * @param ratio position in the range, in [0, 1]
      * @param range the range's height in metres (≥ 0)
-     * @return the scaled position, in [0, 1]
      */
     public double apply(double ratio, double range) {
         double r = Math.min(1, Math.max(0, ratio));

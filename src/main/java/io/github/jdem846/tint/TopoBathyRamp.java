@@ -19,6 +19,13 @@ import java.util.Objects;
  */
 public record TopoBathyRamp(String name, StopRamp land, StopRamp sea) implements ColorRamp {
 
+    /**
+     * Checks that the name and both ramps are given.
+     *
+     * @param name a short name for messages
+     * @param land the ramp above sea level, and the whole ramp when the DEM does not hold both land and sea
+     * @param sea the ramp below sea level
+     */
     public TopoBathyRamp {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(land, "land");
@@ -26,8 +33,9 @@ public record TopoBathyRamp(String name, StopRamp land, StopRamp sea) implements
     }
 
     /**
+     * {@return true when the range holds both land and sea (min &lt; 0 &lt; max), i.e. when the ramp splits at 0 m}
+     *
      * @param range the DEM's valid elevations
-     * @return true when the range holds both land and sea (min &lt; 0 &lt; max), i.e. when the ramp splits at 0 m
      */
     public static boolean holdsLandAndSea(ElevationStatistics range) {
         return !range.isEmpty() && range.min() < 0 && range.max() > 0;

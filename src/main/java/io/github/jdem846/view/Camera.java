@@ -20,6 +20,17 @@ public record Camera(double azimuthDegrees, double elevationDegrees, double dist
     /** Largest picture side, 16384 pixels. */
     public static final int MAX_SIDE = 16384;
 
+    /**
+     * Checks the ranges: a finite azimuth, an elevation in (0, 90], a finite distance ≥ 0 and a field of view in (0,
+     * 180).
+     *
+     * @param azimuthDegrees where the camera stands, clockwise from north, any finite value (taken modulo 360)
+     * @param elevationDegrees the camera's angle above the horizon at the centre, above 0 and at most 90
+     * @param distanceMeters from the centre of the terrain, above 0; or 0 to fit the whole terrain in the picture
+     * @param fieldOfViewDegrees vertical field of view, above 0 and below 180
+     * @param width picture width in pixels, 1 to {@link #MAX_SIDE}
+     * @param height picture height in pixels, 1 to {@link #MAX_SIDE}
+     */
     public Camera {
         if (!Double.isFinite(azimuthDegrees)) {
             throw new IllegalArgumentException("camera azimuth must be a finite number of degrees, got "
@@ -94,7 +105,7 @@ public record Camera(double azimuthDegrees, double elevationDegrees, double dist
         return new Camera(azimuthDegrees, elevationDegrees, distanceMeters, fieldOfViewDegrees, w, h);
     }
 
-    /** @return true when the distance is chosen to fit the terrain */
+    /** {@return true when the distance is chosen to fit the terrain} */
     public boolean fits() {
         return distanceMeters == 0;
     }

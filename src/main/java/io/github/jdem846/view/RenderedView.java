@@ -16,7 +16,7 @@ import java.nio.file.Path;
  */
 public record RenderedView(int width, int height, int[] argb) {
 
-    /** @return a {@code TYPE_INT_ARGB} image backed by the pixels (no copy) */
+    /** {@return a {@code TYPE_INT_ARGB} image backed by the pixels (no copy)} */
     public BufferedImage toBufferedImage() {
         return ImageOutput.toBufferedImage(argb, width, height);
     }

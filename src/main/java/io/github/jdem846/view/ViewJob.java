@@ -45,6 +45,13 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
     /** Most texture pixels per picture pixel, 4. */
     public static final int TEXTURE_PIXELS_PER_PIXEL = 4;
 
+    /**
+     * Checks that the relief, camera and options are given.
+     *
+     * @param relief the relief picture draped on the terrain, and the DEM it comes from
+     * @param camera where the camera stands and the picture's size
+     * @param options exaggeration, background, globe
+     */
     public ViewJob {
         Objects.requireNonNull(relief, "relief");
         Objects.requireNonNull(camera, "camera");

@@ -25,6 +25,19 @@ public record ViewOptions(double exaggeration, int skyTop, int skyHorizon, int b
     /** Default plain body around a globe's terrain. */
     public static final int BODY = 0xFF3A5270;
 
+    /**
+     * Checks that the vertical exaggeration is above 0 and at most 1000.
+     *
+     * @param exaggeration vertical exaggeration: elevations are multiplied by it, above 0 and at most 1000
+     * @param skyTop the background colour straight up (0xAARRGGBB); in globe mode, the colour of space
+     * @param skyHorizon the background colour at and below the horizon; in globe mode unused
+     * @param bodyColor in globe mode, the colour of the body's ellipsoid around the terrain
+     * @param globe true: the terrain lies on the body's ellipsoid at its latitudes and longitudes (radius + height ×
+     *     exaggeration), the rest of the body drawn plain; false: on a plane, distances measured on the ground in
+     *     metres
+     * @param base on a plane, draw walls from the terrain's edges down to a base below its lowest point (a tenth of its
+     *     height range, and at least 1 m, lower), in the edge's colours darkened
+     */
     public ViewOptions {
         if (!(exaggeration > 0 && exaggeration <= 1000)) {
             throw new IllegalArgumentException("vertical exaggeration must be above 0 and at most 1000, got "
