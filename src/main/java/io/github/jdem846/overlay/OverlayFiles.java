@@ -45,11 +45,11 @@ public final class OverlayFiles {
             throw new OverlayFileException(file, Files.exists(file) ? "is not a file" : "no such file");
         }
         if (name.endsWith(".shp")) {
-            return new Overlay(file.getFileName().toString(), ShapefileGeometries.read(file), shapefileCrs(file),
+            return new Overlay(file.toString(), ShapefileGeometries.read(file), shapefileCrs(file),
                     style);
         }
         if (name.endsWith(".geojson") || name.endsWith(".json")) {
-            return new Overlay(file.getFileName().toString(), geoJson(file), crs84(), style);
+            return new Overlay(file.toString(), geoJson(file), crs84(), style);
         }
         throw new OverlayFileException(file, "unknown overlay file type; expected a .geojson, .json or .shp file");
     }

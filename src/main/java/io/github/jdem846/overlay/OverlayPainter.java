@@ -1,5 +1,6 @@
 package io.github.jdem846.overlay;
 
+import io.github.jdem846.geo.CrsResolver;
 import io.github.jdem846.raster.GridGeometry;
 import io.github.jdem846.render.RenderedRelief;
 import java.awt.BasicStroke;
@@ -158,7 +159,7 @@ public final class OverlayPainter {
         if (overlay.crs() == null) {
             return null;
         }
-        CoordinateReferenceSystem target = picture.crs().sis().orElseThrow(() -> new IllegalArgumentException(
+        CoordinateReferenceSystem target = CrsResolver.complete(picture.crs()).sis().orElseThrow(() -> new IllegalArgumentException(
                 overlay.name() + ": the picture's grid has no known CRS to transform the overlay's coordinates to"));
         target = AbstractCRS.castOrCopy(target).forConvention(AxesConvention.RIGHT_HANDED);
         CoordinateReferenceSystem source = AbstractCRS.castOrCopy(overlay.crs())
