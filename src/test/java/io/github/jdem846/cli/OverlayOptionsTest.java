@@ -46,6 +46,24 @@ class OverlayOptionsTest {
     }
 
     @Test
+    void aWindowGetsTheOverlayWhereTheWholePictureHasIt() throws IOException {
+        String styled = SHAPES + ":color=#ff0000,width=1,fill=#0000ff80,radius=4";
+        Path whole = dir.resolve("whole.png");
+        Path window = dir.resolve("window.png");
+        assertEquals(0, render(whole, "--overlay", styled).exitCode());
+        assertEquals(0, render(window, "--overlay", styled, "--window", "cells:40,90,300,200").exitCode());
+        java.awt.image.BufferedImage w = javax.imageio.ImageIO.read(whole.toFile());
+        java.awt.image.BufferedImage part = javax.imageio.ImageIO.read(window.toFile());
+        assertEquals(300, part.getWidth());
+        for (int y = 0; y < part.getHeight(); y++) {
+            for (int x = 0; x < part.getWidth(); x++) {
+                assertEquals(w.getRGB(x + 40, y + 90), part.getRGB(x, y), "pixel " + x + "," + y);
+            }
+        }
+        assertEquals(0xffff0000, part.getRGB(160, 10), "the line on row 100 is row 10 of the window");
+    }
+
+    @Test
     void badFilesAreOneLineNamingTheFileExitOneAndNoPicture() throws IOException {
         Path garbage = dir.resolve("garbage.geojson");
         Files.writeString(garbage, "{\"type\": \"FeatureCollection\", \"features\": [ {");
