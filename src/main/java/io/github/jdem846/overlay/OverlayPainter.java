@@ -37,8 +37,9 @@ import org.opengis.util.FactoryException;
  * as discs. The overlays are drawn in order, each over the ones before.
  *
  * <p>A picture can be drawn on whole ({@link #paint(RenderedRelief)}) or in bands of rows ({@link #paintRows}), as
- * a picture rendered in tiles is written; both give the same pixels. The shapes are prepared once; an instance may
- * be used by one thread at a time.
+ * a picture rendered in tiles is written; both give the same pixels. The shapes are prepared once and not changed
+ * afterwards, so an instance may draw on several bands at once from several threads. A geometry with a coordinate
+ * that cannot be transformed into the picture's CRS (outside the projection's domain) is left out.
  */
 public final class OverlayPainter {
 
