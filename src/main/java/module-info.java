@@ -17,6 +17,7 @@ module io.github.jdem846 {
     exports io.github.jdem846.job;
     exports io.github.jdem846.light;
     exports io.github.jdem846.output;
+    exports io.github.jdem846.overlay;
     exports io.github.jdem846.projection;
     exports io.github.jdem846.raster;
     exports io.github.jdem846.render;
@@ -38,6 +39,9 @@ module io.github.jdem846 {
     // GeoTIFF decoding (automatic modules, named by their Automatic-Module-Name; the reader's superclass is in core)
     requires com.twelvemonkeys.imageio.tiff;
     requires com.twelvemonkeys.imageio.core;
+    // vector overlays: JTS geometries (in the overlay API) and its GeoJSON reader
+    requires transitive org.locationtech.jts;
+    requires org.locationtech.jts.io;
     // NREL SPA sun positions
     requires net.e175.klaus.solarpositioning;
 }

@@ -1,13 +1,16 @@
 package io.github.jdem846.cli;
 
 import io.github.jdem846.job.JobListener;
+import io.github.jdem846.job.OverlaidJob;
 import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.job.Sun;
 import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.WriteOptions;
+import io.github.jdem846.overlay.Overlay;
 import io.github.jdem846.raster.GridRequestException;
 import io.github.jdem846.render.RenderSettings;
 import java.io.PrintWriter;
+import java.util.List;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
@@ -24,6 +27,7 @@ final class JobRunner {
     private final OutputOptions output;
     private final ExecutionOptions execution;
     private final VerboseOption verbose;
+    private List<Overlay> overlays = List.of();
 
     JobRunner(CommandSpec spec, InputOptions input, OutputOptions output, ExecutionOptions execution,
               VerboseOption verbose) {
@@ -32,6 +36,15 @@ final class JobRunner {
         this.output = output;
         this.execution = execution;
         this.verbose = verbose;
+    }
+
+    /**
+     * @param value vector overlays drawn onto the picture ({@link OverlaidJob}); empty for none
+     * @return this runner
+     */
+    JobRunner withOverlays(List<Overlay> value) {
+        overlays = List.copyOf(value);
+        return this;
     }
 
     /**
@@ -53,8 +66,12 @@ final class JobRunner {
                 .withSun(job.sun().byTime() ? Sun.fixed(300, 10) : job.sun());
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> warmUpJob.run(dem, JobListener.NONE), input.input());
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet, output.progress, err)) {
-            job.runAndWrite(output.path(), options, new ConsoleJobListener(progress, err, times, sunTime,
-                    warmUp::stop));
+            ConsoleJobListener listener = new ConsoleJobListener(progress, err, times, sunTime, warmUp::stop);
+            if (overlays.isEmpty()) {
+                job.runAndWrite(output.path(), options, listener);
+            } else {
+                new OverlaidJob(job, overlays).runAndWrite(output.path(), options, listener);
+            }
         } catch (GridRequestException e) {
             throw input.usageError(e);
         } finally {

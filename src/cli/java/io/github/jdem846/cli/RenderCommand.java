@@ -42,6 +42,9 @@ public final class RenderCommand implements Callable<Integer> {
     @Mixin
     ProjectionOptions projection;
 
+    @Mixin
+    OverlayOptions overlays;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -53,10 +56,16 @@ public final class RenderCommand implements Callable<Integer> {
         ReliefJob job = input.job(Product.RELIEF).withScene(sceneOptions.scene()).withSun(sun.sun())
                 .withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
+        overlays.requireValidStyles(spec);
+        if (projection.given() && overlays.given()) {
+            throw Usage.error(spec, "--overlay cannot be combined with --projection yet: draw overlays on the"
+                    + " picture in the DEM's own CRS");
+        }
         if (projection.given()) {
             return new ProjectedJobRunner(spec, input, output, execution, verbose, projection).run(job, sun.time());
         }
         projection.requireConsistent(spec);
-        return new JobRunner(spec, input, output, execution, verbose).run(job, sun.time());
+        return new JobRunner(spec, input, output, execution, verbose).withOverlays(overlays.read())
+                .run(job, sun.time());
     }
 }
