@@ -22,6 +22,12 @@ import java.util.Objects;
  */
 public record OverlaidJob(ReliefJob job, List<Overlay> overlays) {
 
+    /**
+     * Checks the job and copies the list.
+     *
+     * @param job      the job; its product must be an RGBA picture (relief, tint or shadows drawn in colour)
+     * @param overlays the overlays, drawn in this order
+     */
     public OverlaidJob {
         Objects.requireNonNull(job, "job");
         overlays = List.copyOf(overlays);

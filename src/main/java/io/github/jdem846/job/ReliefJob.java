@@ -256,10 +256,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
     }
 
     /**
-     * The memory budget in bytes: {@link #memory()} when given (at most the heap's maximum), else half the heap's
-     * maximum; the readers' and encoders' buffers and the JVM's own take the rest.
-     *
-     * @return the budget
+     * {@return the memory budget in bytes: {@link #memory()} when given (at most the heap's maximum), else half the
+     * heap's maximum}; the readers' and encoders' buffers and the JVM's own take the rest.
      */
     public long memoryBudget() {
         long max = Runtime.getRuntime().maxMemory();

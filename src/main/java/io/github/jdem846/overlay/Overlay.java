@@ -16,6 +16,15 @@ import org.opengis.referencing.crs.CoordinateReferenceSystem;
  */
 public record Overlay(String name, List<Geometry> geometries, CoordinateReferenceSystem crs, OverlayStyle style) {
 
+    /**
+     * Checks the name and style and copies the geometries.
+     *
+     * @param name       what the features are called in messages (usually the file name)
+     * @param geometries the geometries (points, lines, polygons and collections of them); x is easting or longitude
+     * @param crs        the CRS of the coordinates with x east (longitude) first, or {@code null} when unknown: the
+     *                   coordinates are then taken to be in the picture's CRS
+     * @param style      how to draw them
+     */
     public Overlay {
         Objects.requireNonNull(name, "name");
         geometries = List.copyOf(geometries);

@@ -24,6 +24,15 @@ public record OverlayStyle(Color stroke, double width, Color fill, double pointR
             Map.entry("yellow", Color.YELLOW), Map.entry("cyan", Color.CYAN), Map.entry("magenta", Color.MAGENTA),
             Map.entry("orange", Color.ORANGE), Map.entry("gray", Color.GRAY), Map.entry("grey", Color.GRAY));
 
+    /**
+     * Checks the sizes.
+     *
+     * @param stroke      colour of lines, polygon outlines and points (alpha counts)
+     * @param width       line width in picture pixels, ≥ 0 (0: polygons are filled only, lines are not drawn)
+     * @param fill        colour polygons are filled with (alpha counts), or {@code null} for no fill
+     * @param pointRadius radius of the disc drawn for each point, in picture pixels, ≥ 0
+     * @throws IllegalArgumentException for a width or radius below 0, NaN or infinite
+     */
     public OverlayStyle {
         Objects.requireNonNull(stroke, "stroke");
         if (!(width >= 0) || Double.isInfinite(width) || !(pointRadius >= 0) || Double.isInfinite(pointRadius)) {
