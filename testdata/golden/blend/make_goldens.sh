@@ -14,7 +14,7 @@ golden() { # case-name composite-operator output-name "tint options" "hillshade 
   $J tint "$DEM" -o "$T/$case-tint.png" --window $WIN -q $4
   $J hillshade "$DEM" -o "$T/$case-hill.png" --window $WIN -q $5
   convert "$T/$case-tint.png" -alpha off "$T/$case-hill.png" -compose "$op" -composite \
-      -depth 8 -type TrueColor "$name.png"
+      -depth 8 -type TrueColor -strip -define png:exclude-chunk=date,time "$name.png"
 }
 
 # A: the defaults (table-2 tint, jdem846 hillshade, sun 320°/25°)
@@ -27,3 +27,6 @@ BT="--tint etopo1"
 BH="--sun-azimuth 200 --sun-elevation 40 -z 2 --light-intensity 1 --dark-intensity 0.8"
 golden b Multiply  bt_b_multiply   "$BT" "$BH"
 golden b SoftLight bt_b_soft-light "$BT" "$BH"
+
+# Every golden against the W3C formulas computed with numpy (python3-numpy, python3-gdal)
+/usr/bin/python3 check_w3c.py "$T"
