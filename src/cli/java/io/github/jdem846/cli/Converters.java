@@ -236,6 +236,22 @@ final class Converters {
         }
     }
 
+    /** {@code --blend}: {@link io.github.jdem846.render.BlendMode}. */
+    static final class BlendModeName implements ITypeConverter<io.github.jdem846.render.BlendMode> {
+        @Override
+        public io.github.jdem846.render.BlendMode convert(String text) {
+            return checked(() -> io.github.jdem846.render.BlendMode.named(text));
+        }
+    }
+
+    /** {@code --hillshade-opacity}: {@link io.github.jdem846.render.Blend}. */
+    static final class HillshadeOpacity implements ITypeConverter<Double> {
+        @Override
+        public Double convert(String text) {
+            return checkedDouble(text, io.github.jdem846.render.Blend.DEFAULT::withOpacity);
+        }
+    }
+
     /** {@code --light-model}: {@link io.github.jdem846.render.LightModel}. */
     static final class LightModelName implements ITypeConverter<io.github.jdem846.render.LightModel> {
         @Override

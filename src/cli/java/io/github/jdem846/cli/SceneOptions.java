@@ -1,5 +1,7 @@
 package io.github.jdem846.cli;
 
+import io.github.jdem846.render.Blend;
+import io.github.jdem846.render.BlendMode;
 import io.github.jdem846.render.LightModel;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.HillshadeMethod;
@@ -54,6 +56,19 @@ public final class SceneOptions {
                     + " with --light-model sky, 0 with jdem846.")
     Double ambient;
 
+    @Option(names = "--blend", paramLabel = "MODE", defaultValue = "jdem846",
+            converter = Converters.BlendModeName.class,
+            description = "How the shading is laid on the tint: jdem846 (eq. 8, the original's, default), "
+                    + "jdem846-lighten or jdem846-darken (the original's other two: shading only lightens or only "
+                    + "darkens), or a gray hillshade blended as in QGIS: multiply, screen, overlay, soft-light.")
+    BlendMode blend;
+
+    @Option(names = "--hillshade-opacity", paramLabel = "0..1", defaultValue = "1",
+            converter = Converters.HillshadeOpacity.class,
+            description = "Weight of the shaded colour against the bare tint (the original's era-A lighting "
+                    + "multiple, 0.75 there), 0 to 1. Default: ${DEFAULT-VALUE}.")
+    double hillshadeOpacity;
+
     @Option(names = "--sky-directions", paramLabel = "D", defaultValue = "32",
             converter = Converters.SkyDirections.class,
             description = "Azimuths of the sky-view factor's horizons, 4 to 360. Default: ${DEFAULT-VALUE}.")
@@ -80,6 +95,6 @@ public final class SceneOptions {
                 .withShadows(algorithm).withShadowOptions(shadowOptions.options())
                 .withShadowIntensity(shadowIntensity).withLightModel(lightModel)
                 .withAmbient(ambient != null ? ambient : lightModel == LightModel.SKY ? LightModel.SKY_AMBIENT : 0)
-                .withSkyDirections(skyDirections);
+                .withSkyDirections(skyDirections).withBlend(new Blend(blend, hillshadeOpacity));
     }
 }

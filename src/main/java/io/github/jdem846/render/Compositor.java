@@ -9,7 +9,9 @@ import io.github.jdem846.shade.HillshadeOptions;
  * into one ARGB pixel: the brightness of the scene's {@link LightModel} (the original's era-B order for {@link
  * LightModel#JDEM846}: the dot product, minus 2 × shadow intensity × shadowed fraction and any twilight fade),
  * clamped to [−1, 1], then the jDem846 tone (relative light/dark intensity, sign-preserving spot exponent, {@link
- * HillshadeOptions#tone}), then eq. 8 on each channel ({@link Brightness#adjustBrightness(int, double)}).
+ * HillshadeOptions#tone}), then eq. 8 on each channel ({@link Brightness#adjustBrightness(int, double)}). Another
+ * {@link Blend} lays the brightness on the tint by its {@link BlendMode} and mixes the result with the bare tint by
+ * its opacity.
  */
 final class Compositor {
 
@@ -20,6 +22,7 @@ final class Compositor {
     private final double shadowIntensity;
     private final LightModel model;
     private final double ambient;
+    private final Blend blend;
 
     /**
      * The original's composition ({@link LightModel#JDEM846}, no sky light).
@@ -39,6 +42,18 @@ final class Compositor {
      * @param ambient         the weight W of the sky light, 0 to 1 (0: the sky-view factor is not used)
      */
     public Compositor(HillshadeOptions tone, double shadowIntensity, LightModel model, double ambient) {
+        this(tone, shadowIntensity, model, ambient, Blend.DEFAULT);
+    }
+
+    /**
+     * @param tone            supplies the light/dark intensities and spot exponent
+     * @param shadowIntensity {@link LightModel#JDEM846}: a cell fully in cast shadow loses 2 × this much brightness;
+     *                        0 to 1
+     * @param model           how sun, shadow and sky combine
+     * @param ambient         the weight W of the sky light, 0 to 1 (0: the sky-view factor is not used)
+     * @param blend           how the brightness is laid on the tint
+     */
+    public Compositor(HillshadeOptions tone, double shadowIntensity, LightModel model, double ambient, Blend blend) {
         if (!(shadowIntensity >= 0 && shadowIntensity <= 1)) {
             throw new IllegalArgumentException("shadow intensity must be between 0 and 1 (default 0.4), got "
                     + shadowIntensity);
@@ -50,6 +65,7 @@ final class Compositor {
         this.shadowIntensity = shadowIntensity;
         this.model = java.util.Objects.requireNonNull(model, "model");
         this.ambient = ambient;
+        this.blend = java.util.Objects.requireNonNull(blend, "blend");
     }
 
     /**
@@ -74,6 +90,11 @@ final class Compositor {
      * @return the toned brightness in [−1, 1]
      */
     public double brightness(double dot, double shadowFraction, double skyView, double fade) {
+        return tone.tone(light(dot, shadowFraction, skyView, fade));
+    }
+
+    /** The light model's brightness before the tone, clamped to [−1, 1] ({@link LightModel}). */
+    double light(double dot, double shadowFraction, double skyView, double fade) {
         double d;
         if (model == LightModel.JDEM846) {
             d = dot - fade - 2 * shadowIntensity * shadowFraction;
@@ -85,7 +106,7 @@ final class Compositor {
             double light = ambient > 0 ? direct + ambient * skyView : direct;
             d = 2 * light - 1 - fade;
         }
-        return tone.tone(Clamp.between(d, -1.0, 1.0));
+        return Clamp.between(d, -1.0, 1.0);
     }
 
     /**
@@ -109,6 +130,20 @@ final class Compositor {
         if ((tintArgb >>> 24) == 0 || Double.isNaN(dot)) {
             return 0;
         }
-        return Brightness.adjustBrightness(tintArgb, brightness(dot, shadowFraction, skyView, fade));
+        if (blend.isDefault()) {
+            return Brightness.adjustBrightness(tintArgb, brightness(dot, shadowFraction, skyView, fade));
+        }
+        BlendMode mode = blend.mode();
+        double layer = mode.layer(light(dot, shadowFraction, skyView, fade), tone);
+        double o = blend.opacity();
+        return (tintArgb & 0xFF000000) | channel(mode, (tintArgb >> 16) & 0xFF, layer, o) << 16
+                | channel(mode, (tintArgb >> 8) & 0xFF, layer, o) << 8 | channel(mode, tintArgb & 0xFF, layer, o);
+    }
+
+    /** One 8-bit channel: (1 − o)·c + o·blend(c), rounded as the original did ({@code Math.round(c·255)}). */
+    private static int channel(BlendMode mode, int value, double layer, double opacity) {
+        double c = value / 255.0;
+        double mixed = (1 - opacity) * c + opacity * mode.blend(c, layer);
+        return (int) Math.round(Clamp.between(mixed, 0.0, 1.0) * 255.0);
     }
 }

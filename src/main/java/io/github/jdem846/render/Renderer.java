@@ -130,7 +130,7 @@ public final class Renderer {
                 : scene.hillshade().stage(scene.hillshadeOptions());
         boolean levelGround = illumination == null && scene.lightModel() == LightModel.SKY;
         Compositor compositor = new Compositor(scene.hillshadeOptions(), scene.shadowIntensity(),
-                scene.lightModel(), scene.ambient());
+                scene.lightModel(), scene.ambient(), scene.blend());
         LightField light = scene.light();
         int[] argb = new int[width * height];
         float[] values = dem.backingArray();

@@ -31,11 +31,12 @@ import java.util.Objects;
  * @param ambient          the weight W of the light of the sky, 0 to 1; above 0 the sky-view factor of every cell
  *                         is computed ({@link SkyView}), at 0 it is not
  * @param skyDirections    the number of azimuths of the sky-view factor ({@link SkyViewOptions#directions()})
+ * @param blend            how the shading is laid on the tint ({@link Blend}; the original's: eq. 8, opaque)
  */
 public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions hillshadeOptions,
                     ShadowAlgorithm shadows, ShadowOptions shadowOptions, LightField light,
                     double shadowIntensity, double fade, ElevationStatistics tintRange, LightModel lightModel,
-                    double ambient, int skyDirections) {
+                    double ambient, int skyDirections, Blend blend) {
 
     /**
      * Checks that the options and light are given and that the weights are in range.
@@ -54,6 +55,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @param ambient the weight W of the light of the sky, 0 to 1; above 0 the sky-view factor of every cell is
      *     computed ({@link SkyView}), at 0 it is not
      * @param skyDirections the number of azimuths of the sky-view factor ({@link SkyViewOptions#directions()})
+     * @param blend how the shading is laid on the tint ({@link Blend}; the original's: eq. 8, opaque)
      */
     public Scene {
         Objects.requireNonNull(hillshadeOptions, "hillshadeOptions");
@@ -71,20 +73,23 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
             throw new IllegalArgumentException("ambient (sky light) weight must be between 0 and 1, got " + ambient);
         }
         new SkyViewOptions(skyDirections, 1);                 // validates the number of directions
+        Objects.requireNonNull(blend, "blend");
     }
 
     /**
      * The original's defaults: the article's hypsometric tint (table 2; on a DEM holding land and sea, table 2 above
      * 0 m and the original's bathymetric ramp below, {@link ColorRamp#defaultRamp()}), jDem846 hillshade with light
      * multiple 0.75 and intensities 0.75/1.0, no cast shadows, sun at azimuth 320° and elevation 25°, shadow
-     * intensity 0.4, the original's light model without sky light ({@link LightModel#JDEM846}, ambient 0).
+     * intensity 0.4, the original's light model without sky light ({@link LightModel#JDEM846}, ambient 0), eq. 8
+     * fully opaque ({@link Blend#DEFAULT}).
      *
      * @return the default scene
      */
     public static Scene defaults() {
         return new Scene(ColorRamp.defaultRamp(), HillshadeMethod.JDEM846, HillshadeOptions.DEFAULTS,
                 ShadowAlgorithm.NONE, ShadowOptions.DEFAULTS, LightField.uniform(LightDirection.ORIGINAL_DEFAULT),
-                Compositor.DEFAULT_SHADOW_INTENSITY, 0, null, LightModel.JDEM846, 0, SkyViewOptions.DEFAULT_DIRECTIONS);
+                Compositor.DEFAULT_SHADOW_INTENSITY, 0, null, LightModel.JDEM846, 0, SkyViewOptions.DEFAULT_DIRECTIONS,
+                Blend.DEFAULT);
     }
 
     /**
@@ -94,7 +99,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withTint(ColorRamp ramp) {
-        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
     }
 
     /**
@@ -104,7 +109,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withHillshade(HillshadeMethod method) {
-        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
     }
 
     /**
@@ -114,7 +119,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withHillshadeOptions(HillshadeOptions options) {
-        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
     }
 
     /**
@@ -124,7 +129,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadows(ShadowAlgorithm algorithm) {
-        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
     }
 
     /**
@@ -134,7 +139,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadowOptions(ShadowOptions options) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
     }
 
     /**
@@ -154,7 +159,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withLight(LightField field) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
     }
 
     /**
@@ -164,7 +169,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadowIntensity(double intensity) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
     }
 
     /**
@@ -175,7 +180,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withFade(double darkening) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity,
-                darkening, tintRange, lightModel, ambient, skyDirections);
+                darkening, tintRange, lightModel, ambient, skyDirections, blend);
     }
 
     /**
@@ -186,7 +191,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withTintRange(ElevationStatistics range) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                range, lightModel, ambient, skyDirections);
+                range, lightModel, ambient, skyDirections, blend);
     }
 
     /**
@@ -197,7 +202,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withLightModel(LightModel model) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, model, ambient, skyDirections);
+                tintRange, model, ambient, skyDirections, blend);
     }
 
     /**
@@ -208,7 +213,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withAmbient(double weight) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, weight, skyDirections);
+                tintRange, lightModel, weight, skyDirections, blend);
     }
 
     /**
@@ -219,7 +224,18 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withSkyDirections(int directions) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, ambient, directions);
+                tintRange, lightModel, ambient, directions, blend);
+    }
+
+    /**
+     * The same scene with another way of laying the shading on the tint.
+     *
+     * @param b the blend mode and opacity ({@link Blend#DEFAULT}: eq. 8, opaque)
+     * @return the new scene
+     */
+    public Scene withBlend(Blend b) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
+                tintRange, lightModel, ambient, skyDirections, b);
     }
 
     /** {@return true when the sky-view factor is to be computed (an ambient weight above 0)} */
