@@ -287,7 +287,14 @@ public final class OverlayPainter {
         }
         List<Geometry> dense = new ArrayList<>(out.size());
         for (Geometry part : out) {
-            dense.add(part.getDimension() == 0 ? part : Densifier.densify(part, MAP_SEGMENT_DEGREES));
+            if (part.getDimension() == 0) {
+                dense.add(part);
+            } else {
+                Densifier d = new Densifier(part);
+                d.setDistanceTolerance(MAP_SEGMENT_DEGREES);
+                d.setValidate(false); // only points added on the segments: nothing to repair (and no buffer(0))
+                dense.add(d.getResultGeometry());
+            }
         }
         return dense;
     }
