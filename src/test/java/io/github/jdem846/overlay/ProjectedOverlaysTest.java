@@ -202,4 +202,39 @@ class ProjectedOverlaysTest {
         double share = 2 * Math.toRadians(20) * Math.sin(Math.toRadians(10)) / (4 * Math.PI);
         assertEquals(share * ellipse, filled, 0.05 * share * ellipse, "both halves, the area of the square");
     }
+
+    @Test
+    void aLineIsCutWhereAPointCannotBeTransformedNotLeftOut() throws IOException {
+        GridGeometry utm = OverlayPainterTest.grid(OverlayPainterTest.TUJUNGA);
+        Coordinate a = new Coordinate(-118.3, 34.38);
+        Coordinate b = new Coordinate(-118.2, 34.30);
+        Coordinate beyond = new Coordinate(-118.15, 95);   // no latitude: off every map
+        Coordinate d = new Coordinate(-118.1, 34.36);
+        Coordinate e = new Coordinate(-118.0, 34.26);
+        Overlay line = lonLat(GF.createLineString(new Coordinate[] {a, b, beyond, d, e}));
+        int[] argb = OverlayPainterTest.paint(utm, List.of(line));
+        int w = utm.width();
+        int h = utm.height();
+        assertTrue(drawnNear(argb, w, h, utm, mid(a, b)), "the run before the bad point");
+        assertTrue(drawnNear(argb, w, h, utm, mid(d, e)), "the run after it");
+        assertTrue(!drawnNear(argb, w, h, utm, mid(b, d)), "nothing between the runs");
+    }
+
+    private static Coordinate mid(Coordinate p, Coordinate q) {
+        return new Coordinate((p.x + q.x) / 2, (p.y + q.y) / 2);
+    }
+
+    /** Whether a pixel within 2 px of the lon/lat point (placed by UTM zone 11N, as SIS computes it) is drawn. */
+    private static boolean drawnNear(int[] argb, int w, int h, GridGeometry grid, Coordinate lonLat) {
+        double[] xy = new double[2];
+        try {
+            CRS.findOperation(CommonCRS.WGS84.normalizedGeographic(), CommonCRS.WGS84.universal(34, -117), null)
+                    .getMathTransform().transform(new double[] {lonLat.x, lonLat.y}, 0, xy, 0, 1);
+        } catch (Exception ex) {
+            throw new AssertionError(ex);
+        }
+        int col = (int) Math.floor((xy[0] - grid.originX()) / grid.cellWidth());
+        int row = (int) Math.floor((grid.originY() - xy[1]) / grid.cellHeight());
+        return OverlayPainterTest.near(argb, w, h, col, row, 2, 64);
+    }
 }
