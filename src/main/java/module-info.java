@@ -42,6 +42,8 @@ module io.github.jdem846 {
     // vector overlays: JTS geometries (in the overlay API) and its GeoJSON reader
     requires transitive org.locationtech.jts;
     requires org.locationtech.jts.io;
+    // feature properties of GeoJSON overlays: the JSON parser JTS's reader brings (named from its jar file)
+    requires json.simple;
     // NREL SPA sun positions
     requires net.e175.klaus.solarpositioning;
 }

@@ -68,6 +68,9 @@ public final class HillshadeCommand implements Callable<Integer> {
     @Mixin
     VerboseOption verbose;
 
+    @Mixin
+    GrayOverlayRefusal overlay;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 

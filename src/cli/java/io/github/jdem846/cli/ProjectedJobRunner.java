@@ -6,12 +6,16 @@ import io.github.jdem846.io.DemReader;
 import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.WriteOptions;
+import io.github.jdem846.overlay.Overlay;
+import io.github.jdem846.overlay.ProjectedOverlays;
 import io.github.jdem846.projection.MapProjection;
 import io.github.jdem846.projection.ProjectedExtent;
+import io.github.jdem846.projection.ProjectedPicture;
 import io.github.jdem846.projection.ProjectedRender;
 import io.github.jdem846.raster.GridRequestException;
 import io.github.jdem846.render.OutputSize;
 import java.io.PrintWriter;
+import java.util.List;
 import java.util.Optional;
 import picocli.CommandLine.Model.CommandSpec;
 
@@ -27,6 +31,7 @@ final class ProjectedJobRunner {
     private final ExecutionOptions execution;
     private final VerboseOption verbose;
     private final ProjectionOptions projection;
+    private List<Overlay> overlays = List.of();
 
     ProjectedJobRunner(CommandSpec spec, InputOptions input, OutputOptions output, ExecutionOptions execution,
                        VerboseOption verbose, ProjectionOptions projection) {
@@ -36,6 +41,15 @@ final class ProjectedJobRunner {
         this.execution = execution;
         this.verbose = verbose;
         this.projection = projection;
+    }
+
+    /**
+     * @param value overlays to draw onto the projected picture ({@code --overlay})
+     * @return this runner
+     */
+    ProjectedJobRunner withOverlays(List<Overlay> value) {
+        overlays = List.copyOf(value);
+        return this;
     }
 
     /**
@@ -73,8 +87,16 @@ final class ProjectedJobRunner {
         job.requireDrawable();
         PhaseTimes times = new PhaseTimes();
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet, output.progress, err)) {
-            new ProjectedRender(map, width, height).runAndWrite(job, output.path(), options,
-                    new ConsoleJobListener(progress, err, times, sunTime, () -> { }));
+            ConsoleJobListener listener = new ConsoleJobListener(progress, err, times, sunTime, () -> { });
+            ProjectedRender render = new ProjectedRender(map, width, height);
+            if (overlays.isEmpty()) {
+                render.runAndWrite(job, output.path(), options, listener);
+            } else {
+                job.checkOutput(output.path(), options);
+                ProjectedPicture picture = ProjectedOverlays.paint(render.run(job, listener), overlays);
+                picture.write(output.path(), options).notices().forEach(listener::notice);
+                listener.phaseDone("write");
+            }
         } catch (GridRequestException e) {
             throw input.usageError(e);
         } catch (IllegalArgumentException e) {

@@ -57,12 +57,9 @@ public final class RenderCommand implements Callable<Integer> {
                 .withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
         overlays.requireValidStyles(spec);
-        if (projection.given() && overlays.given()) {
-            throw Usage.error(spec, "--overlay cannot be combined with --projection yet: draw overlays on the"
-                    + " picture in the DEM's own CRS");
-        }
         if (projection.given()) {
-            return new ProjectedJobRunner(spec, input, output, execution, verbose, projection).run(job, sun.time());
+            return new ProjectedJobRunner(spec, input, output, execution, verbose, projection)
+                    .withOverlays(overlays.read()).run(job, sun.time());
         }
         projection.requireConsistent(spec);
         return new JobRunner(spec, input, output, execution, verbose).withOverlays(overlays.read())

@@ -47,6 +47,9 @@ public final class ShadowsCommand implements Callable<Integer> {
     @Mixin
     VerboseOption verbose;
 
+    @Mixin
+    GrayOverlayRefusal overlay;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 

@@ -46,6 +46,9 @@ public final class SkyViewCommand implements Callable<Integer> {
     @Mixin
     VerboseOption verbose;
 
+    @Mixin
+    GrayOverlayRefusal overlay;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 

@@ -61,6 +61,9 @@ public final class TilesCommand implements Callable<Integer> {
     SceneOptions sceneOptions;
 
     @Mixin
+    OverlayOptions overlays;
+
+    @Mixin
     SunOptions sun;
 
     @Mixin
@@ -93,8 +96,8 @@ public final class TilesCommand implements Callable<Integer> {
      *                                        that do not go together or do not apply to tiles ({@code --xy-scale},
      *                                        {@code --sun-per-tile}), an output that is neither a directory nor a
      *                                        {@code .pmtiles} name, an unknown ramp, a glob that matches no DEM
-     * @throws IOException                    when a colour file or a directory named cannot be read, or the
-     *                                        directory holds no DEM file
+     * @throws IOException                    when a colour file, an overlay file or a directory named cannot be
+     *                                        read, or the directory holds no DEM file
      * @throws IllegalArgumentException       when {@code --tint} names a colour file that does not exist
      */
     public TileJob tileJob(PrintWriter err) throws IOException {
@@ -123,13 +126,14 @@ public final class TilesCommand implements Callable<Integer> {
                     + "DEM's centre (or --sun-at), so that the light matches across tiles");
         }
         Usage.check(spec, "--output", () -> TileFormat.of(output));
+        overlays.requireValidStyles(spec);
         Scene scene = sceneOptions.scene();
         InputPaths.Resolved resolved = InputPaths.resolve(spec, inputs);
         for (String note : resolved.notes()) {
             err.println("jdem846: note: " + note);
         }
         return TileJob.of(resolved.input(), zooms).withScene(scene).withSun(sun.sun())
-                .withExecution(execution.settings()).withPngCompression(pngLevel);
+                .withExecution(execution.settings()).withPngCompression(pngLevel).withOverlays(overlays.read());
     }
 
     /**

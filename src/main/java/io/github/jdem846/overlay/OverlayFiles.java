@@ -10,9 +10,12 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import org.apache.sis.referencing.CommonCRS;
 import org.apache.sis.referencing.crs.AbstractCRS;
 import org.apache.sis.referencing.cs.AxesConvention;
+import org.json.simple.JSONValue;
+import org.json.simple.parser.JSONParser;
 import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
 import org.locationtech.jts.io.ParseException;
@@ -23,7 +26,9 @@ import org.opengis.referencing.crs.CoordinateReferenceSystem;
  * Reads an overlay from a vector file, chosen by its extension: GeoJSON ({@code .geojson}, {@code .json}; a
  * FeatureCollection, a Feature or a bare geometry, longitude and latitude in degrees on WGS 84 as RFC 7946 says) or
  * an ESRI shapefile ({@code .shp}, its CRS from the {@code .prj} beside it; without one the coordinates are taken
- * to be in the picture's CRS). Attributes ({@code .dbf}, GeoJSON properties) are not read.
+ * to be in the picture's CRS). The simplestyle properties of a feature (GeoJSON {@code properties}, the fields of
+ * a {@code .dbf} of the same names) style it over the file's style ({@link FeatureStyle}); other attributes are not
+ * read.
  */
 public final class OverlayFiles {
 
@@ -45,11 +50,23 @@ public final class OverlayFiles {
             throw new OverlayFileException(file, Files.exists(file) ? "is not a file" : "no such file");
         }
         if (name.endsWith(".shp")) {
-            return new Overlay(file.toString(), ShapefileGeometries.read(file), shapefileCrs(file),
-                    style);
+            List<Geometry> records = ShapefileGeometries.read(file);
+            List<FeatureStyle> recordStyles = DbfStyles.read(file, records.size());
+            List<Geometry> geometries = new ArrayList<>();
+            List<FeatureStyle> styles = new ArrayList<>();
+            for (int i = 0; i < records.size(); i++) {
+                if (records.get(i) != null) {
+                    geometries.add(records.get(i));
+                    styles.add(recordStyles.isEmpty() ? FeatureStyle.NONE : recordStyles.get(i));
+                }
+            }
+            return new Overlay(file.toString(), geometries, shapefileCrs(file), style, styles);
         }
         if (name.endsWith(".geojson") || name.endsWith(".json")) {
-            return new Overlay(file.toString(), geoJson(file), crs84(), style);
+            List<Geometry> geometries = new ArrayList<>();
+            List<FeatureStyle> styles = new ArrayList<>();
+            geoJson(file, geometries, styles);
+            return new Overlay(file.toString(), geometries, crs84(), style, styles);
         }
         throw new OverlayFileException(file, "unknown overlay file type; expected a .geojson, .json or .shp file");
     }
@@ -59,7 +76,8 @@ public final class OverlayFiles {
         return CommonCRS.WGS84.normalizedGeographic();
     }
 
-    private static List<Geometry> geoJson(Path file) throws OverlayFileException {
+    private static void geoJson(Path file, List<Geometry> geometries, List<FeatureStyle> styles)
+            throws OverlayFileException {
         String text;
         try {
             if (Files.size(file) > MAX_GEOJSON_BYTES) {
@@ -71,22 +89,74 @@ public final class OverlayFiles {
         } catch (IOException e) {
             throw new OverlayFileException(file, "cannot be read as UTF-8 text (" + e.getMessage() + ")");
         }
-        Geometry g;
+        Object root;
         try {
-            g = new GeoJsonReader(new GeometryFactory()).read(text);
-        } catch (ParseException | RuntimeException e) {
-            String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage().strip();
-            throw new OverlayFileException(file, "not valid GeoJSON (" + why.lines().findFirst().orElse("")
+            root = new JSONParser().parse(text);
+        } catch (org.json.simple.parser.ParseException | RuntimeException e) {
+            String why = e instanceof org.json.simple.parser.ParseException p ? p.toString().strip() : firstLine(e);
+            throw new OverlayFileException(file, "not valid GeoJSON (" + why
                     + "); expected a FeatureCollection, Feature or geometry object");
         }
-        if (g == null) {
+        if (!(root instanceof Map<?, ?> object) || !(object.get("type") instanceof String)) {
             throw new OverlayFileException(file, "not a GeoJSON FeatureCollection, Feature or geometry object");
         }
-        List<Geometry> out = new ArrayList<>();
-        for (int i = 0; i < g.getNumGeometries(); i++) {
-            out.add(g.getGeometryN(i));
+        GeoJsonReader reader = new GeoJsonReader(new GeometryFactory());
+        if ("FeatureCollection".equals(object.get("type"))) {
+            if (!(object.get("features") instanceof List<?> features)) {
+                throw new OverlayFileException(file, "a FeatureCollection without a \"features\" array");
+            }
+            for (int i = 0; i < features.size(); i++) {
+                feature(file, "feature " + (i + 1), features.get(i), reader, geometries, styles);
+            }
+        } else if ("Feature".equals(object.get("type"))) {
+            feature(file, "the feature", object, reader, geometries, styles);
+        } else {
+            add(file, "the geometry", object, reader, FeatureStyle.NONE, geometries, styles);
         }
+    }
+
+    private static void feature(Path file, String which, Object feature, GeoJsonReader reader,
+                                List<Geometry> geometries, List<FeatureStyle> styles) throws OverlayFileException {
+        if (!(feature instanceof Map<?, ?> f) || !"Feature".equals(f.get("type"))) {
+            throw new OverlayFileException(file, which + " is not a GeoJSON Feature object");
+        }
+        FeatureStyle style;
+        try {
+            style = f.get("properties") instanceof Map<?, ?> p ? FeatureStyle.of(stringKeys(p)) : FeatureStyle.NONE;
+        } catch (IllegalArgumentException e) {
+            throw new OverlayFileException(file, which + ": " + e.getMessage());
+        }
+        if (f.get("geometry") instanceof Map<?, ?> g) {
+            add(file, which, g, reader, style, geometries, styles);
+        }
+    }
+
+    private static void add(Path file, String which, Map<?, ?> geometry, GeoJsonReader reader, FeatureStyle style,
+                            List<Geometry> geometries, List<FeatureStyle> styles) throws OverlayFileException {
+        Geometry g;
+        try {
+            g = reader.read(JSONValue.toJSONString(geometry));
+        } catch (ParseException | RuntimeException e) {
+            throw new OverlayFileException(file, which + ": not a valid GeoJSON geometry (" + firstLine(e) + ")");
+        }
+        if (g == null) {
+            throw new OverlayFileException(file, which + ": not a GeoJSON geometry object");
+        }
+        for (int i = 0; i < g.getNumGeometries(); i++) {
+            geometries.add(g.getGeometryN(i));
+            styles.add(style);
+        }
+    }
+
+    private static Map<String, Object> stringKeys(Map<?, ?> properties) {
+        Map<String, Object> out = new java.util.LinkedHashMap<>();
+        properties.forEach((k, v) -> out.put(String.valueOf(k), v));
         return out;
+    }
+
+    private static String firstLine(Exception e) {
+        String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage().strip();
+        return why.lines().findFirst().orElse("");
     }
 
     private static CoordinateReferenceSystem shapefileCrs(Path shp) throws OverlayFileException {

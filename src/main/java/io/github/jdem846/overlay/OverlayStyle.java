@@ -12,8 +12,9 @@ import java.util.Objects;
  * @param width       line width in picture pixels, ≥ 0 (0: polygons are filled only, lines are not drawn)
  * @param fill        colour polygons are filled with (alpha counts), or {@code null} for no fill
  * @param pointRadius radius of the disc drawn for each point, in picture pixels, ≥ 0
+ * @param pointColor  colour of the discs drawn for points, or {@code null} for {@code stroke}
  */
-public record OverlayStyle(Color stroke, double width, Color fill, double pointRadius) {
+public record OverlayStyle(Color stroke, double width, Color fill, double pointRadius, Color pointColor) {
 
     /** Dark red lines 1.5 px wide, no fill, points of radius 3 px. */
     public static final OverlayStyle DEFAULT = new OverlayStyle(new Color(0xb2, 0x18, 0x2b), 1.5, null, 3);
@@ -31,6 +32,7 @@ public record OverlayStyle(Color stroke, double width, Color fill, double pointR
      * @param width       line width in picture pixels, ≥ 0 (0: polygons are filled only, lines are not drawn)
      * @param fill        colour polygons are filled with (alpha counts), or {@code null} for no fill
      * @param pointRadius radius of the disc drawn for each point, in picture pixels, ≥ 0
+     * @param pointColor  colour of the discs drawn for points, or {@code null} for {@code stroke}
      * @throws IllegalArgumentException for a width or radius below 0, NaN or infinite
      */
     public OverlayStyle {
@@ -39,6 +41,23 @@ public record OverlayStyle(Color stroke, double width, Color fill, double pointR
             throw new IllegalArgumentException("width and radius must be finite and ≥ 0, got " + width + " and "
                     + pointRadius);
         }
+    }
+
+    /**
+     * A style whose points take the stroke colour.
+     *
+     * @param stroke      colour of lines, polygon outlines and points (alpha counts)
+     * @param width       line width in picture pixels, ≥ 0 (0: polygons are filled only, lines are not drawn)
+     * @param fill        colour polygons are filled with (alpha counts), or {@code null} for no fill
+     * @param pointRadius radius of the disc drawn for each point, in picture pixels, ≥ 0
+     */
+    public OverlayStyle(Color stroke, double width, Color fill, double pointRadius) {
+        this(stroke, width, fill, pointRadius, null);
+    }
+
+    /** {@return the colour of the discs drawn for points: {@link #pointColor()}, or the stroke colour} */
+    public Color pointPaint() {
+        return pointColor != null ? pointColor : stroke;
     }
 
     /**
@@ -68,9 +87,9 @@ public record OverlayStyle(Color stroke, double width, Color fill, double pointR
             String key = pair.substring(0, eq).strip().toLowerCase(Locale.ROOT);
             String value = pair.substring(eq + 1).strip();
             switch (key) {
-                case "color", "colour", "stroke" -> stroke = color(value);
+                case "color", "colour", "stroke" -> stroke = parseColor(value);
                 case "width" -> width = number(key, value);
-                case "fill" -> fill = value.equalsIgnoreCase("none") ? null : color(value);
+                case "fill" -> fill = value.equalsIgnoreCase("none") ? null : parseColor(value);
                 case "radius" -> radius = number(key, value);
                 default -> throw new IllegalArgumentException("unknown style key '" + key
                         + "' (keys: color, width, fill, radius)");
@@ -91,7 +110,8 @@ public record OverlayStyle(Color stroke, double width, Color fill, double pointR
         throw new IllegalArgumentException("style " + key + " '" + value + "' is not a number ≥ 0 (pixels)");
     }
 
-    private static Color color(String value) {
+    /** {@return the colour {@code value} names: #RRGGBB, #RRGGBBAA or a name} */
+    static Color parseColor(String value) {
         Color named = NAMES.get(value.toLowerCase(Locale.ROOT));
         if (named != null) {
             return named;

@@ -19,7 +19,7 @@ import org.locationtech.jts.geom.Polygon;
  * The geometries of an ESRI shapefile's {@code .shp} file (ESRI Shapefile Technical Description, 1998): points,
  * multipoints, polylines and polygons, also their Z and M variants (whose extra values are ignored). Polygon rings
  * are grouped as the format says: a clockwise ring is an outer ring, a counter-clockwise ring a hole of the outer
- * ring before it. Null shapes are skipped.
+ * ring before it. A null shape is a null entry, so that the list matches the {@code .dbf}'s records one to one.
  */
 final class ShapefileGeometries {
 
@@ -63,10 +63,7 @@ final class ShapefileGeometries {
             }
             ByteBuffer content = b.slice(pos + 8, (int) length).order(ByteOrder.LITTLE_ENDIAN);
             try {
-                Geometry g = shape(content, gf);
-                if (g != null) {
-                    out.add(g);
-                }
+                out.add(shape(content, gf));
             } catch (IndexOutOfBoundsException | IllegalArgumentException e) {
                 throw new OverlayFileException(shp, "record " + record + " at byte " + pos + " is damaged ("
                         + e.getClass().getSimpleName() + (e.getMessage() == null ? "" : ": " + e.getMessage()) + ")");

@@ -8,6 +8,7 @@ import io.github.jdem846.job.JobListener;
 import io.github.jdem846.job.Sun;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.output.InputProtection;
+import io.github.jdem846.overlay.Overlay;
 import io.github.jdem846.raster.ElevationStatistics;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Scene;
@@ -16,6 +17,7 @@ import io.github.jdem846.sun.SunLightField;
 import io.github.jdem846.sun.TwilightFade;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Objects;
 
 /**
@@ -24,7 +26,8 @@ import java.util.Objects;
  * pixel for the zoom, and only the cells under a group of tiles are read), with hillshade slopes and cast shadows
  * measured in ground metres at every latitude, the tint stretched over the whole DEM's range and the cast-shadow
  * halo of each tile read, so colours, light and shadows run on across tiles and zooms. Written as {@code z/x/y.png}
- * files in a directory or as one PMTiles archive ({@link TileFormat}); a tile with no data is not written.
+ * files in a directory or as one PMTiles archive ({@link TileFormat}); a tile with no data is not written. Vector
+ * overlays ({@link #withOverlays}) are drawn on each tile with data, in tile pixels, continuous across tile seams.
  *
  * <pre>{@code
  * TileReport report = TileJob.of(Path.of("dem.tif"), new ZoomRange(8, 12))
@@ -44,9 +47,11 @@ import java.util.Objects;
  *                         size; with a shared pool ({@link RenderSettings#withPool}) every tile renders on it. The
  *                         tiles do not depend on them
  * @param pngCompression   deflate level of the tiles, 0 to 9
+ * @param overlays         vector overlays drawn on every tile with data, in this order (line widths and radii in
+ *                         tile pixels; see {@link io.github.jdem846.overlay.OverlayPainter#onMap})
  */
 public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, RenderSettings execution,
-                      int pngCompression) {
+                      int pngCompression, List<Overlay> overlays) {
 
     /** Deflate level of the tiles by default: zlib's default, a good size for serving. */
     public static final int DEFAULT_PNG_COMPRESSION = 6;
@@ -62,6 +67,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * @param execution tiles rendered at once ({@link RenderSettings#parallelism()}) and the renderer's tile size; with
      *     a shared pool ({@link RenderSettings#withPool}) every tile renders on it. The tiles do not depend on them
      * @param pngCompression deflate level of the tiles, 0 to 9
+     * @param overlays vector overlays drawn on every tile with data, in this order
      */
     public TileJob {
         Objects.requireNonNull(input, "input");
@@ -72,6 +78,22 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
         if (pngCompression < 0 || pngCompression > 9) {
             throw new IllegalArgumentException("PNG compression level must be 0 to 9, got " + pngCompression);
         }
+        overlays = List.copyOf(overlays);
+    }
+
+    /**
+     * A job without overlays.
+     *
+     * @param input the DEM file, or files read as one grid
+     * @param zooms the zoom levels
+     * @param scene the stages and their settings
+     * @param sun the light, the same for every tile
+     * @param execution tiles rendered at once and the renderer's tile size
+     * @param pngCompression deflate level of the tiles, 0 to 9
+     */
+    public TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, RenderSettings execution,
+                   int pngCompression) {
+        this(input, zooms, scene, sun, execution, pngCompression, List.of());
     }
 
     /**
@@ -103,7 +125,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * @param value the zoom levels
      */
     public TileJob withZooms(ZoomRange value) {
-        return new TileJob(input, value, scene, sun, execution, pngCompression);
+        return new TileJob(input, value, scene, sun, execution, pngCompression, overlays);
     }
 
     /**
@@ -112,7 +134,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * @param value the scene
      */
     public TileJob withScene(Scene value) {
-        return new TileJob(input, zooms, value, sun, execution, pngCompression);
+        return new TileJob(input, zooms, value, sun, execution, pngCompression, overlays);
     }
 
     /**
@@ -121,7 +143,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * @param value the sun
      */
     public TileJob withSun(Sun value) {
-        return new TileJob(input, zooms, scene, value, execution, pngCompression);
+        return new TileJob(input, zooms, scene, value, execution, pngCompression, overlays);
     }
 
     /**
@@ -130,7 +152,7 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * @param value threads and renderer tile size
      */
     public TileJob withExecution(RenderSettings value) {
-        return new TileJob(input, zooms, scene, sun, value, pngCompression);
+        return new TileJob(input, zooms, scene, sun, value, pngCompression, overlays);
     }
 
     /**
@@ -139,7 +161,16 @@ public record TileJob(DemInput input, ZoomRange zooms, Scene scene, Sun sun, Ren
      * @param value the deflate level, 0 to 9
      */
     public TileJob withPngCompression(int value) {
-        return new TileJob(input, zooms, scene, sun, execution, value);
+        return new TileJob(input, zooms, scene, sun, execution, value, overlays);
+    }
+
+    /**
+     * {@return a copy that draws {@code value} on every tile with data}
+     *
+     * @param value the overlays, drawn in this order
+     */
+    public TileJob withOverlays(List<Overlay> value) {
+        return new TileJob(input, zooms, scene, sun, execution, pngCompression, value);
     }
 
     /**

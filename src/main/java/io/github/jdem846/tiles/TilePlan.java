@@ -1,11 +1,15 @@
 package io.github.jdem846.tiles;
 
 import io.github.jdem846.geo.Ellipsoid;
+import io.github.jdem846.geo.WebMercator;
 import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.job.JobListener;
 import io.github.jdem846.output.PngBytes;
+import io.github.jdem846.overlay.OverlayPainter;
 import io.github.jdem846.raster.ElevationStatistics;
+import io.github.jdem846.raster.GridGeometry;
+import io.github.jdem846.raster.PixelAnchor;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shadow.CellWindow;
@@ -33,8 +37,9 @@ public final class TilePlan {
     /** Tiles on a side of a group. */
     static final int GROUP = 4;
 
-    /** One zoom's part of the plan. */
-    private record Level(ZoomGrid grid, TileRange range, ZoomSource source, TileRasterizer rasterizer) {
+    /** One zoom's part of the plan; {@code overlays} null when the job has none. */
+    private record Level(ZoomGrid grid, TileRange range, ZoomSource source, TileRasterizer rasterizer,
+                         OverlayPainter overlays) {
     }
 
     private final TileJob job;
@@ -58,7 +63,7 @@ public final class TilePlan {
             boolean small = Overview.isSmall(projection.grid().width(), projection.grid().height(), own);
             ls.add(new Level(grid, TileRange.covering(projection.extent(), z),
                     new ZoomSource(job.input(), projection, grid, small ? overview : null),
-                    new TileRasterizer(grid, scene, range, perTile)));
+                    new TileRasterizer(grid, scene, range, perTile), overlays(job, z)));
         }
         this.levels = List.copyOf(ls);
         // the deepest zoom first: its groups are the most and the largest
@@ -152,6 +157,21 @@ public final class TilePlan {
         return finest == Integer.MAX_VALUE ? null : Overview.lazy(job.input(), finest);
     }
 
+    /**
+     * The job's overlays on the whole world at zoom {@code z} (Web Mercator pixels, row 0 at the north edge), cut at
+     * the antimeridian and the Web Mercator latitude limit; null when there are none.
+     */
+    private static OverlayPainter overlays(TileJob job, int z) {
+        if (job.overlays().isEmpty()) {
+            return null;
+        }
+        int side = WebMercatorTile.SIZE << z;
+        double cell = WebMercatorTile.pixelSize(z);
+        GridGeometry world = new GridGeometry(side, side, -WebMercator.HALF_WORLD, WebMercator.HALF_WORLD, cell, cell,
+                WebMercator.CRS, PixelAnchor.CORNER);
+        return OverlayPainter.onMap(job.overlays(), world, 0, WebMercator.MAX_LATITUDE);
+    }
+
     /** {@return the job planned} */
     public TileJob job() {
         return job;
@@ -206,6 +226,10 @@ public final class TilePlan {
             }
             WebMercatorTile t = tiles.get(i);
             int[] argb = level.rasterizer().render(t, needs.get(i), source);
+            if (argb != null && level.overlays() != null) {
+                level.overlays().paintWindow(argb, (long) t.x() * WebMercatorTile.SIZE,
+                        (long) t.y() * WebMercatorTile.SIZE, WebMercatorTile.SIZE, WebMercatorTile.SIZE);
+            }
             if (argb != null) {
                 out.add(new EncodedTile(t, PngBytes.rgba(argb, WebMercatorTile.SIZE, WebMercatorTile.SIZE,
                         job.pngCompression())));

@@ -14,7 +14,9 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * {@code render --overlay}: a good file changes the picture, no overlay leaves it as it was; a bad file is one line
- * naming it, exit 1, and no picture; a bad style or an overlay with {@code --projection} is bad usage, exit 2.
+ * naming it, exit 1, and no picture; a bad style is bad usage, exit 2. With {@code --projection} the projected
+ * picture gets the shapes; {@code tiles} takes {@code --overlay} as render does; the gray products refuse it as bad
+ * usage, saying what to use instead.
  */
 class OverlayOptionsTest {
 
@@ -86,14 +88,49 @@ class OverlayOptionsTest {
     }
 
     @Test
-    void aBadStyleOrAProjectionIsBadUsage() {
+    void aBadStyleIsBadUsage() {
         Path out = dir.resolve("out.png");
         CliRun style = render(out, "--overlay", SHAPES + ":colour=nope");
         assertEquals(2, style.exitCode(), style.err());
         assertTrue(style.err().contains("colour 'nope'"), style.err());
-        CliRun projected = render(out, "--overlay", SHAPES, "--projection", "mollweide");
+        CliRun projected = render(out, "--overlay", SHAPES + ":width=-1", "--projection", "mollweide");
         assertEquals(2, projected.exitCode(), projected.err());
-        assertTrue(projected.err().contains("--overlay"), projected.err());
+        CliRun tiles = CliRun.of("tiles", DEM, "--zoom", "10", "-o", dir.resolve("tiles").toString(), "-q",
+                "--overlay", SHAPES + ":fill=nope");
+        assertEquals(2, tiles.exitCode(), tiles.err());
+        assertTrue(tiles.err().contains("colour 'nope'"), tiles.err());
         assertFalse(Files.exists(out));
+        assertFalse(Files.exists(dir.resolve("tiles")));
+    }
+
+    @Test
+    void aProjectedPictureGetsTheShapes() throws IOException {
+        Path plain = dir.resolve("plain.png");
+        Path drawn = dir.resolve("drawn.png");
+        assertEquals(0, render(plain, "--projection", "mollweide", "--width", "300").exitCode());
+        CliRun r = render(drawn, "--projection", "mollweide", "--width", "300", "--overlay", SHAPES + ":width=3");
+        assertEquals(0, r.exitCode(), r.err());
+        java.awt.image.BufferedImage a = javax.imageio.ImageIO.read(plain.toFile());
+        java.awt.image.BufferedImage b = javax.imageio.ImageIO.read(drawn.toFile());
+        assertEquals(a.getWidth(), b.getWidth());
+        int changed = 0;
+        for (int y = 0; y < a.getHeight(); y++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                changed += a.getRGB(x, y) != b.getRGB(x, y) ? 1 : 0;
+            }
+        }
+        assertTrue(changed > 300, changed + " pixels changed");
+    }
+
+    @Test
+    void grayProductsRefuseOverlaysNamingRender() {
+        for (String command : new String[] {"hillshade", "shadows", "skyview"}) {
+            Path out = dir.resolve(command + ".png");
+            CliRun r = CliRun.of(command, DEM, "-o", out.toString(), "-q", "--overlay", SHAPES);
+            assertEquals(2, r.exitCode(), command + ": " + r.err());
+            assertTrue(r.err().contains("--overlay is not drawn on the one-band gray picture of " + command), r.err());
+            assertTrue(r.err().contains("render --tint none --overlay"), r.err());
+            assertFalse(Files.exists(out), command);
+        }
     }
 }
