@@ -112,8 +112,23 @@ public final class PerspectiveRenderer {
         return new Rasterizer(terrain, pose(terrain, camera), camera.width(), camera.height()).drawnCells();
     }
 
-    /** The camera's pose: looking at the middle of the terrain's height range above its centre. */
+    /**
+     * The camera's pose: looking at the middle of the terrain's height range above its centre, or from and at the
+     * points of its {@link LookAt}.
+     */
     static Pose pose(Terrain terrain, Camera camera) {
+        LookAt at = camera.lookAt();
+        if (at != null) {
+            double targetZ = at.targetZ();
+            if (at.targetOnTerrain()) {
+                targetZ = terrain.heightAt(at.targetX(), at.targetY());
+                if (Double.isNaN(targetZ)) {
+                    targetZ = terrain.middleHeight();
+                }
+            }
+            return Pose.lookAt(camera, terrain.toLocal(at.x(), at.y(), at.z()),
+                    terrain.toLocal(at.targetX(), at.targetY(), targetZ));
+        }
         double zMin = Double.POSITIVE_INFINITY;
         double zMax = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < terrain.size(); i++) {
