@@ -10,6 +10,8 @@ import io.github.jdem846.job.Product;
 import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.job.ReliefResult;
 import io.github.jdem846.output.WriteOptions;
+import io.github.jdem846.overlay.Overlay;
+import io.github.jdem846.overlay.OverlayPainter;
 import io.github.jdem846.output.WriteResult;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
@@ -17,6 +19,7 @@ import io.github.jdem846.render.OutputSize;
 import io.github.jdem846.render.RenderedRelief;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Objects;
 
 /**
@@ -36,26 +39,53 @@ import java.util.Objects;
  * view.write(Path.of("view.png"), WriteOptions.defaults());
  * }</pre>
  *
- * @param relief  the relief picture draped on the terrain, and the DEM it comes from
- * @param camera  where the camera stands and the picture's size
- * @param options exaggeration, background, globe
+ * <p>Overlays ({@link #withOverlays}) are drawn onto the relief texture before it is draped, in the texture's
+ * grid (the DEM's CRS), so their lines follow the terrain; their widths and radii are in texture pixels.
+ *
+ * @param relief   the relief picture draped on the terrain, and the DEM it comes from
+ * @param camera   where the camera stands and the picture's size
+ * @param options  exaggeration, background, globe
+ * @param overlays vector overlays drawn onto the relief texture, in order (empty for none)
  */
-public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
+public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options, List<Overlay> overlays) {
 
     /** Most texture pixels per picture pixel, 4. */
     public static final int TEXTURE_PIXELS_PER_PIXEL = 4;
 
     /**
-     * Checks that the relief, camera and options are given.
+     * Checks that the relief, camera, options and overlays are given.
      *
      * @param relief the relief picture draped on the terrain, and the DEM it comes from
      * @param camera where the camera stands and the picture's size
      * @param options exaggeration, background, globe
+     * @param overlays vector overlays drawn onto the relief texture, in order (empty for none)
      */
     public ViewJob {
         Objects.requireNonNull(relief, "relief");
         Objects.requireNonNull(camera, "camera");
         Objects.requireNonNull(options, "options");
+        overlays = List.copyOf(overlays);
+    }
+
+    /**
+     * A view without overlays.
+     *
+     * @param relief the relief picture draped on the terrain, and the DEM it comes from
+     * @param camera where the camera stands and the picture's size
+     * @param options exaggeration, background, globe
+     */
+    public ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
+        this(relief, camera, options, List.of());
+    }
+
+    /**
+     * A copy drawing {@code value} onto the relief texture.
+     *
+     * @param value the overlays, in drawing order
+     * @return the new job
+     */
+    public ViewJob withOverlays(List<Overlay> value) {
+        return new ViewJob(relief, camera, options, value);
     }
 
     /**
@@ -82,14 +112,19 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
         listener.phaseDone("terrain");
         Window seen = visibleWindow(terrain);
         if (seen == null) {
-            throw new IllegalArgumentException("the camera sees none of the terrain: it looks away from it or stands"
-                    + " too close; step back with a larger distance");
+            throw new IllegalArgumentException(camera.lookAt() != null
+                    ? "the camera sees none of the terrain: it looks away from it; give a look-at point on the terrain"
+                    : "the camera sees none of the terrain: it looks away from it or stands too close; step back"
+                            + " with a larger distance");
         }
         Window.Cells seenCells = seen.resolve(info.geometry());
         ReliefResult picture = relief.withWindow(seen)
                 .withSize(textureSize(seenCells.width(), seenCells.height(), camera)).run(listener);
         RenderedRelief texture = new RenderedRelief(picture.width(), picture.height(), argbOf(picture),
                 picture.geometry());
+        if (!overlays.isEmpty()) {
+            texture = OverlayPainter.of(overlays, texture.geometry()).paint(texture);
+        }
         RenderedView view = new PerspectiveRenderer(relief.execution()).render(terrain, texture, camera, options,
                 listener);
         listener.phaseDone("view");
