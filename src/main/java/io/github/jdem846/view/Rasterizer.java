@@ -20,7 +20,7 @@ final class Rasterizer {
     /** {@link #iz} of a vertex behind the near plane. */
     private static final float BEHIND = -1;
 
-    private final Terrain terrain;
+    private final Mesh mesh;
     private final Pose pose;
     private final int width;
     private final int height;
@@ -35,18 +35,23 @@ final class Rasterizer {
      * beyond {@link Pose#near} is marked, and its triangles are clipped.
      */
     Rasterizer(Terrain terrain, Pose pose, int width, int height) {
-        this.terrain = terrain;
+        this(Mesh.of(terrain), pose, width, height);
+    }
+
+    /** Projects the vertices of {@code mesh}, as {@link #Rasterizer(Terrain, Pose, int, int)}. */
+    Rasterizer(Mesh mesh, Pose pose, int width, int height) {
+        this.mesh = mesh;
         this.pose = pose;
         this.width = width;
         this.height = height;
-        int n = terrain.vertexCount();
+        int n = mesh.vertexCount();
         sx = new float[n];
         sy = new float[n];
         iz = new float[n];
         for (int i = 0; i < n; i++) {
-            double x = terrain.x[i];
-            double y = terrain.y[i];
-            double z = terrain.z[i];
+            double x = mesh.x[i];
+            double y = mesh.y[i];
+            double z = mesh.z[i];
             double d = pose.depth(x, y, z);
             if (Double.isNaN(z) || !(d > pose.near)) {
                 sx[i] = Float.NaN;
@@ -66,29 +71,15 @@ final class Rasterizer {
         return (height + BAND - 1) / BAND;
     }
 
-    /** The number of cells; items from here on are the base's walls, one per edge segment. */
-    private int cells() {
-        return (terrain.width - 1) * (terrain.height - 1);
-    }
-
-    /** The four vertices of item {@code k}: a cell's, or a wall's (two on the edge, the two under them). */
+    /** The four vertices of item {@code k}. */
     private int[] corners(int k) {
-        int w = terrain.width;
-        int cells = cells();
-        if (k < cells) {
-            int i = (k / (w - 1)) * w + k % (w - 1);
-            return new int[] {i, i + 1, i + w, i + w + 1};
-        }
-        int j = k - cells;
-        int next = (j + 1) % terrain.perimeter.length;
-        int n = terrain.size();
-        return new int[] {terrain.perimeter[j], terrain.perimeter[next], n + j, n + next};
+        return new int[] {mesh.items[4 * k], mesh.items[4 * k + 1], mesh.items[4 * k + 2], mesh.items[4 * k + 3]};
     }
 
     /** Lists, band by band in item order (cells, then walls), the items whose projection may touch the band. */
     private void bin() {
         int bands = bands();
-        int items = cells() + terrain.perimeter.length;
+        int items = mesh.itemCount();
         int[] first = new int[Math.max(0, items)];
         int[] last = new int[Math.max(0, items)];
         int[] count = new int[bands + 1];
@@ -156,8 +147,8 @@ final class Rasterizer {
      * overlap the picture, or null when none does.
      */
     int[] drawnCells() {
-        int cellsAcross = terrain.width - 1;
-        int cells = cells();
+        int cellsAcross = mesh.gridWidth;
+        int cells = mesh.gridCells;
         int[] box = {Integer.MAX_VALUE, Integer.MAX_VALUE, -1, -1};
         for (int k : binCells) {
             if (k >= cells) {
@@ -185,11 +176,10 @@ final class Rasterizer {
     void drawBand(int band, float[] depth, float[] texU, float[] texV, boolean[] wall) {
         int y0 = band * BAND;
         int y1 = Math.min(height, y0 + BAND);
-        int cells = cells();
         for (int e = binStart[band]; e < binStart[band + 1]; e++) {
             int k = binCells[e];
             int[] q = corners(k);
-            boolean isWall = k >= cells;
+            boolean isWall = mesh.kinds[k] == Mesh.WALL;
             // a cell: NW, NE, SE and NW, SE, SW; a wall: top, next top, next base and top, next base, base
             triangle(q[0], q[1], q[3], y0, y1, depth, texU, texV, wall, isWall);
             triangle(q[0], q[3], q[2], y0, y1, depth, texU, texV, wall, isWall);
@@ -212,8 +202,8 @@ final class Rasterizer {
             }
             return;
         }
-        fill(sx[a], sy[a], iz[a], terrain.u[a], terrain.v[a], sx[b], sy[b], iz[b], terrain.u[b], terrain.v[b],
-                sx[c], sy[c], iz[c], terrain.u[c], terrain.v[c], y0, y1, depth, texU, texV, wall, isWall);
+        fill(sx[a], sy[a], iz[a], mesh.u[a], mesh.v[a], sx[b], sy[b], iz[b], mesh.u[b], mesh.v[b],
+                sx[c], sy[c], iz[c], mesh.u[c], mesh.v[c], y0, y1, depth, texU, texV, wall, isWall);
     }
 
     /**
@@ -234,8 +224,8 @@ final class Rasterizer {
                 out[n * 5] = sx[p];
                 out[n * 5 + 1] = sy[p];
                 out[n * 5 + 2] = iz[p];
-                out[n * 5 + 3] = terrain.u[p];
-                out[n * 5 + 4] = terrain.v[p];
+                out[n * 5 + 3] = mesh.u[p];
+                out[n * 5 + 4] = mesh.v[p];
                 n++;
             }
             if (pIn != (iz[q] != BEHIND)) {
@@ -248,12 +238,12 @@ final class Rasterizer {
 
     /** The point where the edge from vertex {@code i} to vertex {@code j} crosses the near plane. */
     private void onNearPlane(int i, int j, double[] out, int at) {
-        double xi = terrain.x[i];
-        double yi = terrain.y[i];
-        double zi = terrain.z[i];
-        double xj = terrain.x[j];
-        double yj = terrain.y[j];
-        double zj = terrain.z[j];
+        double xi = mesh.x[i];
+        double yi = mesh.y[i];
+        double zi = mesh.z[i];
+        double xj = mesh.x[j];
+        double yj = mesh.y[j];
+        double zj = mesh.z[j];
         double di = pose.depth(xi, yi, zi);
         double dj = pose.depth(xj, yj, zj);
         double f = (pose.near - di) / (dj - di);
@@ -262,8 +252,8 @@ final class Rasterizer {
         out[at] = pose.centerX + pose.focal * cx / pose.near;
         out[at + 1] = pose.centerY - pose.focal * cy / pose.near;
         out[at + 2] = 1 / pose.near;
-        out[at + 3] = terrain.u[i] + f * (terrain.u[j] - terrain.u[i]);
-        out[at + 4] = terrain.v[i] + f * (terrain.v[j] - terrain.v[i]);
+        out[at + 3] = mesh.u[i] + f * (mesh.u[j] - mesh.u[i]);
+        out[at + 4] = mesh.v[i] + f * (mesh.v[j] - mesh.v[i]);
     }
 
     /** Fills a triangle given by its vertices' screen positions, inverse depths and texture positions. */

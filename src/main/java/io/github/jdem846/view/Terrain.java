@@ -188,6 +188,16 @@ final class Terrain {
                 + fr * ((1 - fc) * dem.get(c0, r1) + fc * dem.get(c1, r1));
     }
 
+    /** {@return the height of the base's vertices, or NaN without a base} */
+    float baseLevel() {
+        for (int i = size(); i < vertexCount(); i++) {
+            if (!Float.isNaN(z[i])) {
+                return z[i];
+            }
+        }
+        return Float.NaN;
+    }
+
     /** {@return the middle of the grid's range of heights (DEM units, not exaggerated), 0 when all is no-data} */
     double middleHeight() {
         double lo = Double.POSITIVE_INFINITY;

@@ -125,8 +125,8 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options, List
         if (!overlays.isEmpty()) {
             texture = OverlayPainter.of(overlays, texture.geometry()).paint(texture);
         }
-        RenderedView view = new PerspectiveRenderer(relief.execution()).render(terrain, texture, camera, options,
-                listener);
+        RenderedView view = new PerspectiveRenderer(relief.execution()).render(terrain, fileSource(cells),
+                meshDecimation(cells.width(), cells.height(), camera), texture, camera, options, listener);
         listener.phaseDone("view");
         return view;
     }
@@ -193,8 +193,32 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options, List
 
     /** The terrain: the window, box-averaged to about one cell per picture pixel, measured as the relief is. */
     private Dem readTerrain(Window.Cells cells) throws IOException {
-        ReadRequest request = new ReadRequest(cells, meshDecimation(cells.width(), cells.height(), camera));
-        LoadedDem loaded = DemReader.load(relief.input(), request);
+        return read(cells, meshDecimation(cells.width(), cells.height(), camera));
+    }
+
+    /** The window's cells at any resolution, for the levels of detail. */
+    private TerrainSource fileSource(Window.Cells cells) {
+        return new TerrainSource() {
+            @Override
+            public int width() {
+                return cells.width();
+            }
+
+            @Override
+            public int height() {
+                return cells.height();
+            }
+
+            @Override
+            public Dem read(int col, int row, int w, int h, int factor) throws IOException {
+                return ViewJob.this.read(Window.cells(cells.col() + col, cells.row() + row, w, h), factor);
+            }
+        };
+    }
+
+    /** Cells of the file box-averaged by {@code factor}, measured as the relief is. */
+    private Dem read(Window window, int factor) throws IOException {
+        LoadedDem loaded = DemReader.load(relief.input(), new ReadRequest(window, factor));
         Dem dem = loaded.dem();
         GridGeometry g = relief.mercatorScale().apply(dem.geometry().withDefaultEllipsoid(
                 relief.body().ellipsoid()));
