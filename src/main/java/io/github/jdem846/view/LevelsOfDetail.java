@@ -13,7 +13,7 @@ import java.util.List;
  * the one before, down to the full resolution. A level is used where a cell of the level above it would look
  * larger than {@value #PIXELS_PER_CELL} pixel: within {@code factor × cell size × focal length} metres of the camera.
  * Each level covers the rectangle of the full-resolution grid holding the coarse vertices that need it and the
- * camera can see (inside the picture, or at or behind the near plane), inside the level above's rectangle; a level
+ * camera can see (inside the picture, or just behind the near plane), inside the level above's rectangle; a level
  * of more than {@value #MAX_CELLS_PER_PIXEL} cells per picture pixel is not read, nor any finer one.
  *
  * <p>The seams: a coarser cell is left out only when it lies wholly inside the finer level's vertices, so the
@@ -78,7 +78,7 @@ final class LevelsOfDetail {
         while (factor > 1) {
             int finer = Integer.highestOneBit(factor - 1);
             double reach = factor * cellMeters * pose.focal / PIXELS_PER_CELL;
-            int[] box = needed(terrain, pose, reach, width, height);
+            int[] box = needed(terrain, pose, reach, 2 * decimation * cellMeters, width, height);
             if (box == null) {
                 break;
             }
@@ -105,9 +105,10 @@ final class LevelsOfDetail {
     /**
      * The box {firstCol, firstRow, lastCol, lastRow} of the coarse grid's vertices within {@code reach} metres of
      * the camera that it may see: in the picture (with a margin of a tenth of its size), or at or behind the near
-     * plane; null when none.
+     * plane and less than {@code cell} metres from the camera (the vertices of the triangles the near plane cuts
+     * inside the picture); null when none.
      */
-    private static int[] needed(Terrain terrain, Pose pose, double reach, int width, int height) {
+    private static int[] needed(Terrain terrain, Pose pose, double reach, double cell, int width, int height) {
         int[] box = {Integer.MAX_VALUE, Integer.MAX_VALUE, -1, -1};
         double mx = 0.1 * width;
         double my = 0.1 * height;
@@ -126,7 +127,11 @@ final class LevelsOfDetail {
                 if (dx * dx + dy * dy + dz * dz > reach * reach) {
                     continue;
                 }
-                if (pose.depth(x, y, z) > pose.near) {
+                if (pose.depth(x, y, z) <= pose.near) {
+                    if (dx * dx + dy * dy + dz * dz > cell * cell) {
+                        continue;
+                    }
+                } else {
                     double sx = pose.screenX(x, y, z);
                     double sy = pose.screenY(x, y, z);
                     if (sx < -mx || sx > width + mx || sy < -my || sy > height + my) {
