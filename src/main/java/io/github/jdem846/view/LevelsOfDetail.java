@@ -18,8 +18,9 @@ import java.util.List;
  *
  * <p>The seams: a coarser cell is left out only when it lies wholly inside the finer level's vertices, so the
  * coarser cells around a finer level overlap its edge, and the finer level has skirts hanging from its edge, as
- * deep as its range of heights, textured as the edge: a ray passing between the two surfaces meets a skirt or the
- * overlapping coarse cell, so there are no cracks. Without a finer level, the mesh is the coarse grid's alone, drawn
+ * deep as its range of heights (not below the base, and none at the grid's edge), textured as the edge: a ray
+ * passing between the two surfaces meets a skirt or the overlapping coarse cell, so there are no cracks. Where a
+ * level reaches the grid's edge, it has the base's walls in place of the coarse ones. Without a finer level, the mesh is the coarse grid's alone, drawn
  * exactly as a uniform mesh is.
  */
 final class LevelsOfDetail {
@@ -155,7 +156,7 @@ final class LevelsOfDetail {
         int items = base.itemCount();
         for (Level level : levels) {
             Dem d = level.dem();
-            vertices += d.width() * d.height() + perimeter(d.width(), d.height()).length;
+            vertices += d.width() * d.height() + 2 * perimeter(d.width(), d.height()).length;
             items += (d.width() - 1) * (d.height() - 1) + perimeter(d.width(), d.height()).length;
         }
         float[] x = Arrays.copyOf(base.x, vertices);
@@ -225,14 +226,19 @@ final class LevelsOfDetail {
             int bottom = n + w * h;
             float depth = zMin <= zMax ? zMax - zMin + 1 : 1;
             boolean[] edge = levels.get(l).onEdge();
+            int wallBottom = bottom + ring.length;
             for (int j = 0; j < ring.length; j++) {
                 int top = n + ring[j];
-                x[bottom + j] = x[top];
-                y[bottom + j] = y[top];
-                z[bottom + j] = onGridEdge(ring[j], w, h, edge) && !Float.isNaN(baseZ) ? Math.min(baseZ,
-                        z[top] - depth) : z[top] - depth;
-                u[bottom + j] = u[top];
-                v[bottom + j] = v[top];
+                for (int at : new int[] {bottom + j, wallBottom + j}) {
+                    x[at] = x[top];
+                    y[at] = y[top];
+                    u[at] = u[top];
+                    v[at] = v[top];
+                }
+                // not below the base, and none on the grid's edge, so a skirt never shows outside the terrain
+                float skirt = onGridEdge(ring[j], w, h, edge) ? z[top] : z[top] - depth;
+                z[bottom + j] = Float.isNaN(baseZ) ? skirt : Math.max(baseZ, skirt);
+                z[wallBottom + j] = Float.isNaN(z[top]) ? Float.NaN : baseZ;
             }
             for (int j = 0; j < ring.length; j++) {
                 int after = (j + 1) % ring.length;
@@ -243,11 +249,12 @@ final class LevelsOfDetail {
                 }
                 out[4 * k] = n + ring[j];
                 out[4 * k + 1] = n + ring[after];
-                out[4 * k + 2] = bottom + j;
-                out[4 * k + 3] = bottom + after;
+                int under = wall ? wallBottom : bottom;
+                out[4 * k + 2] = under + j;
+                out[4 * k + 3] = under + after;
                 kinds[k++] = wall ? Mesh.WALL : Mesh.SKIRT;
             }
-            n = bottom + ring.length;
+            n = wallBottom + ring.length;
         }
         return new Mesh(x, y, z, u, v, Arrays.copyOf(out, 4 * k), Arrays.copyOf(kinds, k), base.gridWidth,
                 base.gridCells);
