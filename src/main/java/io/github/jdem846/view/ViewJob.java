@@ -29,7 +29,8 @@ import java.util.Objects;
  * {@link PerspectiveRenderer}.
  *
  * <p>What the picture cannot show is not computed: the terrain is read box-averaged to at most about one cell per
- * picture pixel ({@link #meshDecimation}); the relief texture, cast shadows included, is rendered only for the
+ * picture pixel ({@link #meshDecimation}), and finer only near the camera, where a coarser cell would look larger
+ * than a pixel, and only in the part the camera sees (levels of detail); the relief texture, cast shadows included, is rendered only for the
  * cells the camera sees, at most at about {@value #TEXTURE_PIXELS_PER_PIXEL} texture pixels per picture pixel
  * ({@link #textureSize}).
  *
