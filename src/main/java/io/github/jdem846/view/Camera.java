@@ -1,11 +1,14 @@
 package io.github.jdem846.view;
 
 /**
- * A pinhole camera looking at the centre of the terrain (the middle of the grid, at the middle of its range of
- * heights, exaggerated): placed at {@code azimuth} (clockwise from north, the
+ * A pinhole camera, placed in one of two ways. By direction: looking at the centre of the terrain (the middle of the
+ * grid, at the middle of its range of heights, exaggerated), placed at {@code azimuth} (clockwise from north, the
  * direction the camera stands in as seen from the centre) and {@code elevation} above the horizon, {@code distance}
  * metres from the centre, with a vertical field of view of {@code fieldOfView} degrees; the top of the picture faces
- * away from the camera (azimuth 180°, elevation 90° looks straight down with north up).
+ * away from the camera (azimuth 180°, elevation 90° looks straight down with north up). By position ({@link
+ * #lookingAt}): standing at a point and looking at another, given in the DEM's coordinates ({@link LookAt}); the
+ * azimuth, elevation and distance are then not used, and the picture's top faces the same way (away from the camera,
+ * north up when looking straight down).
  *
  * @param azimuthDegrees   where the camera stands, clockwise from north, any finite value (taken modulo 360)
  * @param elevationDegrees the camera's angle above the horizon at the centre, above 0 and at most 90
@@ -13,9 +16,11 @@ package io.github.jdem846.view;
  * @param fieldOfViewDegrees vertical field of view, above 0 and below 180
  * @param width            picture width in pixels, 1 to {@link #MAX_SIDE}
  * @param height           picture height in pixels, 1 to {@link #MAX_SIDE}
+ * @param lookAt           where the camera stands and what it looks at, or null to place it by azimuth, elevation
+ *                         and distance
  */
 public record Camera(double azimuthDegrees, double elevationDegrees, double distanceMeters,
-                     double fieldOfViewDegrees, int width, int height) {
+                     double fieldOfViewDegrees, int width, int height, LookAt lookAt) {
 
     /** Largest picture side, 16384 pixels. */
     public static final int MAX_SIDE = 16384;
@@ -30,6 +35,8 @@ public record Camera(double azimuthDegrees, double elevationDegrees, double dist
      * @param fieldOfViewDegrees vertical field of view, above 0 and below 180
      * @param width picture width in pixels, 1 to {@link #MAX_SIDE}
      * @param height picture height in pixels, 1 to {@link #MAX_SIDE}
+     * @param lookAt where the camera stands and what it looks at, or null to place it by azimuth, elevation and
+     *     distance
      */
     public Camera {
         if (!Double.isFinite(azimuthDegrees)) {
@@ -55,6 +62,45 @@ public record Camera(double azimuthDegrees, double elevationDegrees, double dist
     }
 
     /**
+     * A camera placed by azimuth, elevation and distance.
+     *
+     * @param azimuthDegrees where the camera stands, clockwise from north, any finite value (taken modulo 360)
+     * @param elevationDegrees the camera's angle above the horizon at the centre, above 0 and at most 90
+     * @param distanceMeters from the centre of the terrain, above 0; or 0 to fit the whole terrain in the picture
+     * @param fieldOfViewDegrees vertical field of view, above 0 and below 180
+     * @param width picture width in pixels, 1 to {@link #MAX_SIDE}
+     * @param height picture height in pixels, 1 to {@link #MAX_SIDE}
+     */
+    public Camera(double azimuthDegrees, double elevationDegrees, double distanceMeters, double fieldOfViewDegrees,
+                  int width, int height) {
+        this(azimuthDegrees, elevationDegrees, distanceMeters, fieldOfViewDegrees, width, height, null);
+    }
+
+    /**
+     * A camera standing at a point and looking at another.
+     *
+     * @param lookAt             where it stands and what it looks at, in the DEM's coordinates
+     * @param fieldOfViewDegrees vertical field of view, above 0 and below 180
+     * @param width              picture width in pixels, 1 to {@link #MAX_SIDE}
+     * @param height             picture height in pixels, 1 to {@link #MAX_SIDE}
+     * @return the camera
+     */
+    public static Camera lookingAt(LookAt lookAt, double fieldOfViewDegrees, int width, int height) {
+        return new Camera(200, 35, 0, fieldOfViewDegrees, width, height, java.util.Objects.requireNonNull(lookAt,
+                "lookAt"));
+    }
+
+    /**
+     * A copy placed by position and look-at point instead.
+     *
+     * @param value where it stands and what it looks at, or null to place it by azimuth, elevation and distance
+     * @return the new camera
+     */
+    public Camera withLookAt(LookAt value) {
+        return new Camera(azimuthDegrees, elevationDegrees, distanceMeters, fieldOfViewDegrees, width, height, value);
+    }
+
+    /**
      * A camera that fits the terrain: azimuth 200°, elevation 35°, field of view 40°, 1200 × 800 pixels.
      *
      * @return the camera
@@ -71,7 +117,7 @@ public record Camera(double azimuthDegrees, double elevationDegrees, double dist
      * @return the new camera
      */
     public Camera withDirection(double azimuth, double elevation) {
-        return new Camera(azimuth, elevation, distanceMeters, fieldOfViewDegrees, width, height);
+        return new Camera(azimuth, elevation, distanceMeters, fieldOfViewDegrees, width, height, lookAt);
     }
 
     /**
@@ -81,7 +127,7 @@ public record Camera(double azimuthDegrees, double elevationDegrees, double dist
      * @return the new camera
      */
     public Camera withDistance(double meters) {
-        return new Camera(azimuthDegrees, elevationDegrees, meters, fieldOfViewDegrees, width, height);
+        return new Camera(azimuthDegrees, elevationDegrees, meters, fieldOfViewDegrees, width, height, lookAt);
     }
 
     /**
@@ -91,7 +137,7 @@ public record Camera(double azimuthDegrees, double elevationDegrees, double dist
      * @return the new camera
      */
     public Camera withFieldOfView(double degrees) {
-        return new Camera(azimuthDegrees, elevationDegrees, distanceMeters, degrees, width, height);
+        return new Camera(azimuthDegrees, elevationDegrees, distanceMeters, degrees, width, height, lookAt);
     }
 
     /**
@@ -102,11 +148,11 @@ public record Camera(double azimuthDegrees, double elevationDegrees, double dist
      * @return the new camera
      */
     public Camera withSize(int w, int h) {
-        return new Camera(azimuthDegrees, elevationDegrees, distanceMeters, fieldOfViewDegrees, w, h);
+        return new Camera(azimuthDegrees, elevationDegrees, distanceMeters, fieldOfViewDegrees, w, h, lookAt);
     }
 
-    /** {@return true when the distance is chosen to fit the terrain} */
+    /** {@return true when the distance is chosen to fit the terrain (a camera placed by direction, distance 0)} */
     public boolean fits() {
-        return distanceMeters == 0;
+        return lookAt == null && distanceMeters == 0;
     }
 }

@@ -5,6 +5,7 @@ import io.github.jdem846.raster.Dem;
 import io.github.jdem846.render.RenderProgress;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.RenderedRelief;
+import java.io.IOException;
 import java.util.Objects;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ForkJoinPool;
@@ -58,9 +59,36 @@ public final class PerspectiveRenderer {
         Objects.requireNonNull(progress, "progress");
         Terrain terrain = Terrain.of(dem, texture.geometry(), options);
         Pose pose = pose(terrain, camera);
+        return draw(Mesh.of(terrain), terrain, pose, texture, camera, options, progress);
+    }
+
+    /**
+     * Renders the view with levels of detail ({@link LevelsOfDetail}): the grid of {@code source} box-averaged by
+     * {@code decimation}, and finer near the camera.
+     *
+     * @throws IOException when a level cannot be read
+     */
+    RenderedView render(TerrainSource source, int decimation, RenderedRelief texture, Camera camera,
+                        ViewOptions options, RenderProgress progress) throws IOException, InterruptedException {
+        Dem coarse = source.read(0, 0, source.width(), source.height(), decimation);
+        return render(coarse, source, decimation, texture, camera, options, progress);
+    }
+
+    /** As {@link #render(TerrainSource, int, RenderedRelief, Camera, ViewOptions, RenderProgress)}, its coarse grid read. */
+    RenderedView render(Dem coarse, TerrainSource source, int decimation, RenderedRelief texture, Camera camera,
+                        ViewOptions options, RenderProgress progress) throws IOException, InterruptedException {
+        Terrain terrain = Terrain.of(coarse, texture.geometry(), options);
+        Pose pose = pose(terrain, camera);
+        Mesh mesh = LevelsOfDetail.mesh(terrain, coarse, source, decimation, pose, camera.width(), camera.height(),
+                texture.geometry());
+        return draw(mesh, terrain, pose, texture, camera, options, progress);
+    }
+
+    private RenderedView draw(Mesh mesh, Terrain terrain, Pose pose, RenderedRelief texture, Camera camera,
+                              ViewOptions options, RenderProgress progress) throws InterruptedException {
         int w = camera.width();
         int h = camera.height();
-        Rasterizer rasterizer = new Rasterizer(terrain, pose, w, h);
+        Rasterizer rasterizer = new Rasterizer(mesh, pose, w, h);
         Background background = new Background(pose, options, terrain.globe);
         TextureSampler sampler = new TextureSampler(texture);
         float[] depth = new float[w * h];
@@ -112,8 +140,23 @@ public final class PerspectiveRenderer {
         return new Rasterizer(terrain, pose(terrain, camera), camera.width(), camera.height()).drawnCells();
     }
 
-    /** The camera's pose: looking at the middle of the terrain's height range above its centre. */
+    /**
+     * The camera's pose: looking at the middle of the terrain's height range above its centre, or from and at the
+     * points of its {@link LookAt}.
+     */
     static Pose pose(Terrain terrain, Camera camera) {
+        LookAt at = camera.lookAt();
+        if (at != null) {
+            double targetZ = at.targetZ();
+            if (at.targetOnTerrain()) {
+                targetZ = terrain.heightAt(at.targetX(), at.targetY());
+                if (Double.isNaN(targetZ)) {
+                    targetZ = terrain.middleHeight();
+                }
+            }
+            return Pose.lookAt(camera, terrain.toLocal(at.x(), at.y(), at.z()),
+                    terrain.toLocal(at.targetX(), at.targetY(), targetZ));
+        }
         double zMin = Double.POSITIVE_INFINITY;
         double zMax = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < terrain.size(); i++) {

@@ -15,7 +15,7 @@ final class Pose {
     final double focal;
     final double centerX;
     final double centerY;
-    /** Points nearer than this along the view axis are not drawn. */
+    /** The near plane: triangles are clipped to the points at least this far along the view axis. */
     final double near;
 
     private Pose(double[] eye, double[] right, double[] up, double[] forward, double focal, double centerX,
@@ -54,6 +54,34 @@ final class Pose {
     }
 
     /**
+     * The pose of a camera at {@code eye} looking at {@code target} (local metres): the right axis is horizontal
+     * (forward × up, or east when looking straight down or up), as {@link #of} makes it for the same direction.
+     *
+     * @param camera field of view and picture size
+     * @param eye    where the camera stands
+     * @param target the point at the centre of the picture, not at {@code eye}
+     * @return the pose
+     */
+    static Pose lookAt(Camera camera, double[] eye, double[] target) {
+        double[] forward = {target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]};
+        double distance = Math.sqrt(forward[0] * forward[0] + forward[1] * forward[1] + forward[2] * forward[2]);
+        if (!(distance > 0)) {
+            throw new IllegalArgumentException("the camera stands on the point it looks at: give a look-at point"
+                    + " away from the camera's position");
+        }
+        for (int k = 0; k < 3; k++) {
+            forward[k] /= distance;
+        }
+        double horizontal = Math.hypot(forward[0], forward[1]);
+        double[] right = horizontal > 1e-12 ? new double[] {forward[1] / horizontal, -forward[0] / horizontal, 0}
+                : new double[] {1, 0, 0};
+        double[] up = cross(right, forward);
+        double focal = camera.height() / 2.0 / Math.tan(Math.toRadians(camera.fieldOfViewDegrees()) / 2);
+        return new Pose(eye.clone(), right, up, forward, focal, camera.width() / 2.0, camera.height() / 2.0,
+                distance * 1e-4);
+    }
+
+    /**
      * The same camera with the picture's centre moved by ({@code dx}, {@code dy}) pixels (a lens shift: the view
      * direction and the perspective are unchanged).
      */
@@ -63,6 +91,16 @@ final class Pose {
 
     private static double[] cross(double[] a, double[] b) {
         return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+
+    /** The point's coordinate on the camera's right axis (metres). */
+    double cameraX(double x, double y, double z) {
+        return (x - eye[0]) * right[0] + (y - eye[1]) * right[1] + (z - eye[2]) * right[2];
+    }
+
+    /** The point's coordinate on the camera's up axis (metres). */
+    double cameraY(double x, double y, double z) {
+        return (x - eye[0]) * up[0] + (y - eye[1]) * up[1] + (z - eye[2]) * up[2];
     }
 
     /** Depth of a point along the view axis (metres, > 0 in front of the camera). */

@@ -29,9 +29,14 @@ final class Terrain {
      * vertex under {@code perimeter[j]}.
      */
     final int[] perimeter;
+    /** The grid the mesh was made of, for placing points given in its coordinates. */
+    private final Dem dem;
+    private final double exaggeration;
 
-    private Terrain(int width, int height, float[] x, float[] y, float[] z, float[] u, float[] v, GlobeFrame globe,
-                    int[] perimeter) {
+    private Terrain(Dem dem, double exaggeration, int width, int height, float[] x, float[] y, float[] z, float[] u,
+                    float[] v, GlobeFrame globe, int[] perimeter) {
+        this.dem = dem;
+        this.exaggeration = exaggeration;
         this.width = width;
         this.height = height;
         this.x = x;
@@ -71,7 +76,7 @@ final class Terrain {
         } else {
             placeOnPlane(dem, options.exaggeration(), x, y, z);
         }
-        Terrain t = new Terrain(w, h, x, y, z, u, v, frame, new int[0]);
+        Terrain t = new Terrain(dem, options.exaggeration(), w, h, x, y, z, u, v, frame, new int[0]);
         return options.base() && !options.globe() && w >= 2 && h >= 2 ? t.withBase() : t;
     }
 
@@ -120,7 +125,93 @@ final class Terrain {
             bu[n + j] = u[top];
             bv[n + j] = v[top];
         }
-        return new Terrain(width, height, bx, by, bz, bu, bv, globe, ring);
+        return new Terrain(dem, exaggeration, width, height, bx, by, bz, bu, bv, globe, ring);
+    }
+
+    /**
+     * A point given in the grid's coordinates, in the mesh's local frame: on a plane, placed as the cell centres are
+     * (between them, linearly; beyond the edges, on by the edge cells' sizes); on the globe, on the ellipsoid.
+     *
+     * @param east   easting (or longitude) in the grid's CRS units
+     * @param north  northing (or latitude)
+     * @param elevation in the DEM's units, before the exaggeration
+     * @return {x, y, z} in metres
+     * @throws IllegalArgumentException on the globe, when the point cannot be turned into a latitude and longitude
+     */
+    double[] toLocal(double east, double north, double elevation) {
+        GridGeometry g = dem.geometry();
+        double up = elevation * exaggeration;
+        if (globe != null) {
+            GeoLocator locator = g.geoLocator().orElseThrow();
+            LatLon at = locator.toLatLon(east, north);
+            double[] p = new double[3];
+            double[] local = new double[3];
+            globe.ecef(at.latitude(), at.longitude(), up, p);
+            globe.toLocal(p, local);
+            return local;
+        }
+        double col = (east - g.originX()) / g.cellWidth() - 0.5;
+        double row = (g.originY() - north) / g.cellHeight() - 0.5;
+        int r0 = (int) Math.max(0, Math.min(height - 2, Math.floor(row)));
+        int r1 = Math.min(height - 1, r0 + 1);
+        double t = row - r0;
+        double ya = y[r0 * width];
+        double yb = r1 > r0 ? y[r1 * width] : ya - g.cellHeightMeters(r0);
+        double cw = (1 - t) * g.cellWidthMeters(r0) + t * g.cellWidthMeters(r1);
+        return new double[] {(col - (width - 1) / 2.0) * cw, ya + t * (yb - ya), up};
+    }
+
+    /**
+     * The grid's height at a point given in its coordinates, bilinear between the cell centres.
+     *
+     * @param east  easting (or longitude)
+     * @param north northing (or latitude)
+     * @return the height in the DEM's units (not exaggerated), or NaN outside the grid's cell centres or next to
+     *         no-data
+     */
+    double heightAt(double east, double north) {
+        GridGeometry g = dem.geometry();
+        double col = (east - g.originX()) / g.cellWidth() - 0.5;
+        double row = (g.originY() - north) / g.cellHeight() - 0.5;
+        if (!(col >= 0 && row >= 0 && col <= width - 1 && row <= height - 1)) {
+            return Double.NaN;
+        }
+        int c0 = (int) Math.min(width - 2, Math.floor(col));
+        int r0 = (int) Math.min(height - 2, Math.floor(row));
+        c0 = Math.max(0, c0);
+        r0 = Math.max(0, r0);
+        int c1 = Math.min(width - 1, c0 + 1);
+        int r1 = Math.min(height - 1, r0 + 1);
+        double fc = col - c0;
+        double fr = row - r0;
+        return (1 - fr) * ((1 - fc) * dem.get(c0, r0) + fc * dem.get(c1, r0))
+                + fr * ((1 - fc) * dem.get(c0, r1) + fc * dem.get(c1, r1));
+    }
+
+    /** {@return the height of the base's vertices, or NaN without a base} */
+    float baseLevel() {
+        for (int i = size(); i < vertexCount(); i++) {
+            if (!Float.isNaN(z[i])) {
+                return z[i];
+            }
+        }
+        return Float.NaN;
+    }
+
+    /** {@return the middle of the grid's range of heights (DEM units, not exaggerated), 0 when all is no-data} */
+    double middleHeight() {
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
+        for (int r = 0; r < height; r++) {
+            for (int c = 0; c < width; c++) {
+                float value = dem.get(c, r);
+                if (!Float.isNaN(value)) {
+                    lo = Math.min(lo, value);
+                    hi = Math.max(hi, value);
+                }
+            }
+        }
+        return lo <= hi ? 0.5 * (lo + hi) : 0;
     }
 
     /** Cell centres on a plane, ground metres from the grid's centre; heights times the exaggeration. */

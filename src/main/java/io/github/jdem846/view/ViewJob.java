@@ -10,6 +10,8 @@ import io.github.jdem846.job.Product;
 import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.job.ReliefResult;
 import io.github.jdem846.output.WriteOptions;
+import io.github.jdem846.overlay.Overlay;
+import io.github.jdem846.overlay.OverlayPainter;
 import io.github.jdem846.output.WriteResult;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.raster.GridGeometry;
@@ -17,6 +19,7 @@ import io.github.jdem846.render.OutputSize;
 import io.github.jdem846.render.RenderedRelief;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Objects;
 
 /**
@@ -26,7 +29,8 @@ import java.util.Objects;
  * {@link PerspectiveRenderer}.
  *
  * <p>What the picture cannot show is not computed: the terrain is read box-averaged to at most about one cell per
- * picture pixel ({@link #meshDecimation}); the relief texture, cast shadows included, is rendered only for the
+ * picture pixel ({@link #meshDecimation}), and finer only near the camera, where a coarser cell would look larger
+ * than a pixel, and only in the part the camera sees (levels of detail); the relief texture, cast shadows included, is rendered only for the
  * cells the camera sees, at most at about {@value #TEXTURE_PIXELS_PER_PIXEL} texture pixels per picture pixel
  * ({@link #textureSize}).
  *
@@ -36,26 +40,53 @@ import java.util.Objects;
  * view.write(Path.of("view.png"), WriteOptions.defaults());
  * }</pre>
  *
- * @param relief  the relief picture draped on the terrain, and the DEM it comes from
- * @param camera  where the camera stands and the picture's size
- * @param options exaggeration, background, globe
+ * <p>Overlays ({@link #withOverlays}) are drawn onto the relief texture before it is draped, in the texture's
+ * grid (the DEM's CRS), so their lines follow the terrain; their widths and radii are in texture pixels.
+ *
+ * @param relief   the relief picture draped on the terrain, and the DEM it comes from
+ * @param camera   where the camera stands and the picture's size
+ * @param options  exaggeration, background, globe
+ * @param overlays vector overlays drawn onto the relief texture, in order (empty for none)
  */
-public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
+public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options, List<Overlay> overlays) {
 
     /** Most texture pixels per picture pixel, 4. */
     public static final int TEXTURE_PIXELS_PER_PIXEL = 4;
 
     /**
-     * Checks that the relief, camera and options are given.
+     * Checks that the relief, camera, options and overlays are given.
      *
      * @param relief the relief picture draped on the terrain, and the DEM it comes from
      * @param camera where the camera stands and the picture's size
      * @param options exaggeration, background, globe
+     * @param overlays vector overlays drawn onto the relief texture, in order (empty for none)
      */
     public ViewJob {
         Objects.requireNonNull(relief, "relief");
         Objects.requireNonNull(camera, "camera");
         Objects.requireNonNull(options, "options");
+        overlays = List.copyOf(overlays);
+    }
+
+    /**
+     * A view without overlays.
+     *
+     * @param relief the relief picture draped on the terrain, and the DEM it comes from
+     * @param camera where the camera stands and the picture's size
+     * @param options exaggeration, background, globe
+     */
+    public ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
+        this(relief, camera, options, List.of());
+    }
+
+    /**
+     * A copy drawing {@code value} onto the relief texture.
+     *
+     * @param value the overlays, in drawing order
+     * @return the new job
+     */
+    public ViewJob withOverlays(List<Overlay> value) {
+        return new ViewJob(relief, camera, options, value);
     }
 
     /**
@@ -82,16 +113,21 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
         listener.phaseDone("terrain");
         Window seen = visibleWindow(terrain);
         if (seen == null) {
-            throw new IllegalArgumentException("the camera sees none of the terrain: it looks away from it or stands"
-                    + " too close; step back with a larger distance");
+            throw new IllegalArgumentException(camera.lookAt() != null
+                    ? "the camera sees none of the terrain: it looks away from it; give a look-at point on the terrain"
+                    : "the camera sees none of the terrain: it looks away from it or stands too close; step back"
+                            + " with a larger distance");
         }
         Window.Cells seenCells = seen.resolve(info.geometry());
         ReliefResult picture = relief.withWindow(seen)
                 .withSize(textureSize(seenCells.width(), seenCells.height(), camera)).run(listener);
         RenderedRelief texture = new RenderedRelief(picture.width(), picture.height(), argbOf(picture),
                 picture.geometry());
-        RenderedView view = new PerspectiveRenderer(relief.execution()).render(terrain, texture, camera, options,
-                listener);
+        if (!overlays.isEmpty()) {
+            texture = OverlayPainter.of(overlays, texture.geometry()).paint(texture);
+        }
+        RenderedView view = new PerspectiveRenderer(relief.execution()).render(terrain, fileSource(cells),
+                meshDecimation(cells.width(), cells.height(), camera), texture, camera, options, listener);
         listener.phaseDone("view");
         return view;
     }
@@ -158,8 +194,32 @@ public record ViewJob(ReliefJob relief, Camera camera, ViewOptions options) {
 
     /** The terrain: the window, box-averaged to about one cell per picture pixel, measured as the relief is. */
     private Dem readTerrain(Window.Cells cells) throws IOException {
-        ReadRequest request = new ReadRequest(cells, meshDecimation(cells.width(), cells.height(), camera));
-        LoadedDem loaded = DemReader.load(relief.input(), request);
+        return read(cells, meshDecimation(cells.width(), cells.height(), camera));
+    }
+
+    /** The window's cells at any resolution, for the levels of detail. */
+    private TerrainSource fileSource(Window.Cells cells) {
+        return new TerrainSource() {
+            @Override
+            public int width() {
+                return cells.width();
+            }
+
+            @Override
+            public int height() {
+                return cells.height();
+            }
+
+            @Override
+            public Dem read(int col, int row, int w, int h, int factor) throws IOException {
+                return ViewJob.this.read(Window.cells(cells.col() + col, cells.row() + row, w, h), factor);
+            }
+        };
+    }
+
+    /** Cells of the file box-averaged by {@code factor}, measured as the relief is. */
+    private Dem read(Window window, int factor) throws IOException {
+        LoadedDem loaded = DemReader.load(relief.input(), new ReadRequest(window, factor));
         Dem dem = loaded.dem();
         GridGeometry g = relief.mercatorScale().apply(dem.geometry().withDefaultEllipsoid(
                 relief.body().ellipsoid()));

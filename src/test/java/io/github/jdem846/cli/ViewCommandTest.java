@@ -55,4 +55,55 @@ class ViewCommandTest {
         assertEquals(1, run.err().strip().lines().count(), run.err());
         assertFalse(Files.exists(out));
     }
+
+    /**
+     * A camera 40 m above the floor of Big Tujunga Canyon looking east down the valley: the top row is sky (one
+     * gradient colour across), the bottom row terrain (not the sky's colours).
+     */
+    @Test
+    void aCameraByPositionAndLookAtPoint() throws Exception {
+        Path out = tmp.resolve("valley.png");
+        CliRun run = CliRun.of("view", DEM, "-o", out.toString(), "-q", "--width", "120", "--height", "80",
+                "--camera-position", "382479,3796143,560", "--look-at", "384729,3796203", "--fov", "60",
+                "--overlay", "testdata/overlay/bigtujunga_test_shapes.geojson:color=yellow,width=3");
+        assertEquals(0, run.exitCode(), run.err());
+        BufferedImage image = ImageIO.read(out.toFile());
+        assertEquals(image.getRGB(0, 0), image.getRGB(119, 0), "sky across the top");
+        for (int x = 0; x < 120; x++) {
+            assertTrue(image.getRGB(x, 79) != image.getRGB(x, 0), "terrain across the bottom, column " + x);
+        }
+    }
+
+    @Test
+    void badCameraPlacementsAreBadUsage() {
+        Path out = tmp.resolve("x.png");
+        String[][] cases = {
+            {"--camera-position", "382479,3796143,560"},
+            {"--look-at", "384729,3796203"},
+            {"--camera-position", "382479,3796143", "--look-at", "384729,3796203"},
+            {"--camera-position", "382479,3796143,x", "--look-at", "384729,3796203"},
+            {"--camera-position", "382479,3796143,560", "--look-at", "1,2,3,4"},
+            {"--camera-position", "382479,3796143,560", "--look-at", "384729,3796203", "--camera-azimuth", "10"},
+            {"--camera-position", "382479,3796143,560", "--look-at", "382479,3796143,560"},
+            {"--overlay", "testdata/overlay/bigtujunga_test_shapes.geojson:width=-1"},
+        };
+        for (String[] options : cases) {
+            String[] args = new String[options.length + 4];
+            args[0] = "view";
+            args[1] = DEM;
+            args[2] = "-o";
+            args[3] = out.toString();
+            System.arraycopy(options, 0, args, 4, options.length);
+            CliRun run = CliRun.of(args);
+            assertEquals(2, run.exitCode(), String.join(" ", options) + ": " + run.err());
+            assertEquals(1, run.err().strip().lines().filter(l -> !l.startsWith("Try ")).count(), run.err());
+            assertTrue(java.util.stream.Stream.of("--camera-position", "--look-at", "--camera-azimuth", "--overlay")
+                    .anyMatch(run.err()::contains), "the message names the option: " + run.err());
+        }
+        CliRun away = CliRun.of("view", DEM, "-o", out.toString(), "--camera-position", "382479,3796143,560",
+                "--look-at", "382479,3796143,9000");
+        assertEquals(1, away.exitCode(), away.err());
+        assertTrue(away.err().contains("sees none of the terrain"), away.err());
+        assertFalse(Files.exists(out));
+    }
 }

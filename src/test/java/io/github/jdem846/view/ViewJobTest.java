@@ -11,8 +11,17 @@ import io.github.jdem846.render.OutputSize;
 import io.github.jdem846.render.RenderSettings;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shadow.ShadowAlgorithm;
+import io.github.jdem846.io.DemReader;
+import io.github.jdem846.io.Window;
+import io.github.jdem846.overlay.Overlay;
+import io.github.jdem846.overlay.OverlayStyle;
+import io.github.jdem846.raster.GridGeometry;
+import java.awt.Color;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.GeometryFactory;
 
 /** A view of a real DEM file, from file to pixels. */
 class ViewJobTest {
@@ -69,5 +78,56 @@ class ViewJobTest {
                 ViewOptions.defaults().withGlobe(true));
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> job.run(JobListener.NONE));
         assertEquals(true, e.getMessage().contains("latitudes and longitudes"), e.getMessage());
+    }
+
+    /**
+     * An overlay is drawn onto the relief before it is draped: a yellow line in the DEM's CRS down the centres of
+     * column 260 of Big Tujunga, seen straight down (north up) over the window of columns 200 … 319 and rows 150 …
+     * 229 on the flattened terrain, from the distance where the window's rows fill the picture's, lands in column
+     * 60 of the picture (±1) on every row inside; seen obliquely on the exaggerated terrain it is still drawn.
+     */
+    @Test
+    void anOverlayLineIsDrapedWhereAFlatViewPredicts() throws Exception {
+        GridGeometry g = DemReader.inspect(io.github.jdem846.io.DemInput.of(TUJUNGA)).geometry();
+        double x = g.originX() + 260.5 * g.cellWidth();
+        double north = g.originY() - 100 * g.cellHeight();
+        double south = g.originY() - 300 * g.cellHeight();
+        Overlay line = new Overlay("line", List.of(new GeometryFactory().createLineString(new Coordinate[] {
+            new Coordinate(x, north), new Coordinate(x, south)})), null,
+                new OverlayStyle(Color.YELLOW, 1, null, 3));
+        ReliefJob relief = ReliefJob.of(TUJUNGA).withWindow(Window.cells(200, 150, 120, 80));
+        double fov = 40;
+        double distance = 80 * g.cellHeight() / 2 / Math.tan(Math.toRadians(fov / 2));
+        RenderedView down = new ViewJob(relief, new Camera(180, 90, distance, fov, 120, 80),
+                ViewOptions.defaults().withExaggeration(1e-9)).withOverlays(List.of(line)).run(JobListener.NONE);
+        for (int r = 1; r < 79; r++) {
+            int best = -1;
+            int bestScore = -1;
+            for (int c = 0; c < 120; c++) {
+                int score = yellowness(down.argb()[r * 120 + c]);
+                if (score > bestScore) {
+                    bestScore = score;
+                    best = c;
+                }
+            }
+            assertEquals(60, best, 1, "row " + r + ": the line's column");
+            assertEquals(true, bestScore > 150, "row " + r + ": the line is yellow, " + bestScore);
+        }
+        RenderedView oblique = new ViewJob(relief, new Camera(200, 35, 0, 40, 240, 160),
+                ViewOptions.defaults().withExaggeration(1.5)).withOverlays(List.of(line)).run(JobListener.NONE);
+        RenderedView plain = new ViewJob(relief, new Camera(200, 35, 0, 40, 240, 160),
+                ViewOptions.defaults().withExaggeration(1.5)).run(JobListener.NONE);
+        long yellow = java.util.Arrays.stream(oblique.argb()).filter(c -> yellowness(c) > 60).count();
+        long yellowBefore = java.util.Arrays.stream(plain.argb()).filter(c -> yellowness(c) > 60).count();
+        assertEquals(true, yellow > yellowBefore + 40, "yellow pixels " + yellow + ", without the overlay "
+                + yellowBefore);
+    }
+
+    /** How yellow a colour is: red and green above blue. */
+    private static int yellowness(int argb) {
+        int r = (argb >> 16) & 255;
+        int g = (argb >> 8) & 255;
+        int b = argb & 255;
+        return Math.min(r, g) - b;
     }
 }
