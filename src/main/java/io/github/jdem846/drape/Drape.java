@@ -9,7 +9,6 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Objects;
 import org.apache.sis.referencing.CRS;
 import org.apache.sis.referencing.crs.AbstractCRS;
@@ -117,7 +116,8 @@ public record Drape(List<DrapeImage> images) implements ColorLayer {
     }
 
     private static String fmt(double v) {
-        return String.format(Locale.ROOT, "%.6g", v);
+        return new java.math.BigDecimal(v).round(new java.math.MathContext(10)).stripTrailingZeros()
+                .toPlainString();
     }
 
     /** The bounding box (xmin, ymin, xmax, ymax) of the picture's cells in the image's CRS, or null if none maps. */

@@ -264,7 +264,7 @@ public record DrapeImage(Path file, GridGeometry grid, boolean crsGiven) {
         try {
             return new DrapeImage(file, grid.withCrs(CrsResolver.fromWkt(wkt)), true);
         } catch (IllegalArgumentException e) {
-            throw new DrapeFileException(from, "not a CRS in WKT: " + e.getMessage());
+            throw new DrapeFileException(from, e.getMessage());
         }
     }
 
