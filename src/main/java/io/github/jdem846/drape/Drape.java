@@ -37,6 +37,8 @@ public record Drape(List<DrapeImage> images) implements ColorLayer {
 
     /** Cell centres closer than this (in image pixels) to a pixel centre are taken to lie on it. */
     private static final double SNAP = 1e-9;
+    /** An image this many times finer than the grid, or more, is read every k-th pixel. */
+    static final int MIN_STEP = 3;
     /** Points across each side of the picture sampled to find its footprint in an image's CRS. */
     private static final int FOOTPRINT_STEPS = 64;
 
@@ -205,7 +207,11 @@ public record Drape(List<DrapeImage> images) implements ColorLayer {
         }
     }
 
-    /** One image's colour at each cell of {@code area}: bilinear on premultiplied colours, 0 outside the image. */
+    /**
+     * One image's colour at each cell of {@code area}: bilinear on premultiplied colours, 0 outside the image. An
+     * image at least {@value #MIN_STEP} times finer than the grid is read every k-th pixel ({@link #steps}), k the
+     * whole number of its pixels a cell spans, and each cell takes the pixel read nearest its centre.
+     */
     private static int[] sample(DrapeImage image, MathTransform mt, GridGeometry grid, CellWindow area)
             throws IOException {
         int w = area.width();
@@ -220,51 +226,84 @@ public record Drape(List<DrapeImage> images) implements ColorLayer {
         }
         transform(mt, xy);
         GridGeometry g = image.grid();
-        int iw = g.width();
-        int ih = g.height();
+        int[] k = steps(image, mt, grid);
+        int kx = k[0];
+        int ky = k[1];
+        int phaseX = kx / 2;
+        int phaseY = ky / 2;
+        // the pixels read: columns phaseX + i·kx, i < nx; rows phaseY + j·ky, j < ny
+        int nx = (g.width() - 1 - phaseX) / kx + 1;
+        int ny = (g.height() - 1 - phaseY) / ky + 1;
         int minCol = Integer.MAX_VALUE;
         int maxCol = -1;
         int minRow = Integer.MAX_VALUE;
         int maxRow = -1;
-        for (int k = 0; k < w * h; k++) {
+        for (int i = 0; i < w * h; i++) {
             // pixel-centre coordinates: pixel i's centre at i, its extent [i − 0.5, i + 0.5)
-            double u = snap((xy[2 * k] - g.originX()) / g.cellWidth() - 0.5);
-            double v = snap((g.originY() - xy[2 * k + 1]) / g.cellHeight() - 0.5);
-            if (!(u >= -0.5 && u < iw - 0.5 && v >= -0.5 && v < ih - 0.5)) {
-                xy[2 * k] = Double.NaN;
+            double u = snap((xy[2 * i] - g.originX()) / g.cellWidth() - 0.5);
+            double v = snap((g.originY() - xy[2 * i + 1]) / g.cellHeight() - 0.5);
+            if (!(u >= -0.5 && u < g.width() - 0.5 && v >= -0.5 && v < g.height() - 0.5)) {
+                xy[2 * i] = Double.NaN;
                 continue;
             }
-            u = Math.min(Math.max(u, 0), iw - 1);
-            v = Math.min(Math.max(v, 0), ih - 1);
-            xy[2 * k] = u;
-            xy[2 * k + 1] = v;
+            // in the pixels read
+            u = Math.min(Math.max(kx == 1 ? u : snap((u - phaseX) / kx), 0), nx - 1);
+            v = Math.min(Math.max(ky == 1 ? v : snap((v - phaseY) / ky), 0), ny - 1);
+            xy[2 * i] = u;
+            xy[2 * i + 1] = v;
             minCol = Math.min(minCol, (int) u);
-            maxCol = Math.max(maxCol, Math.min(iw - 1, (int) u + 1));
+            maxCol = Math.max(maxCol, Math.min(nx - 1, (int) u + 1));
             minRow = Math.min(minRow, (int) v);
-            maxRow = Math.max(maxRow, Math.min(ih - 1, (int) v + 1));
+            maxRow = Math.max(maxRow, Math.min(ny - 1, (int) v + 1));
         }
         int[] out = new int[w * h];
         if (maxCol < 0) {
             return out;
         }
         int pw = maxCol - minCol + 1;
-        int[] px = image.readArgb(minCol, minRow, pw, maxRow - minRow + 1);
-        for (int k = 0; k < w * h; k++) {
-            double u = xy[2 * k];
+        int[] px = image.readArgb(phaseX + minCol * kx, phaseY + minRow * ky, pw, maxRow - minRow + 1, kx, ky);
+        for (int i = 0; i < w * h; i++) {
+            double u = xy[2 * i];
             if (u != u) {
                 continue;
             }
-            double v = xy[2 * k + 1];
-            int i0 = (int) u;
-            int j0 = (int) v;
-            double fx = u - i0;
-            double fy = v - j0;
-            int i1 = Math.min(i0 + 1, iw - 1);
-            int j1 = Math.min(j0 + 1, ih - 1);
-            out[k] = bilinear(px[(j0 - minRow) * pw + i0 - minCol], px[(j0 - minRow) * pw + i1 - minCol],
+            double v = xy[2 * i + 1];
+            // along an axis read every k-th pixel, the nearest pixel read; else bilinear
+            int i0 = kx == 1 ? (int) u : (int) Math.floor(u + 0.5);
+            int j0 = ky == 1 ? (int) v : (int) Math.floor(v + 0.5);
+            double fx = kx == 1 ? u - i0 : 0;
+            double fy = ky == 1 ? v - j0 : 0;
+            int i1 = kx == 1 ? Math.min(i0 + 1, nx - 1) : i0;
+            int j1 = ky == 1 ? Math.min(j0 + 1, ny - 1) : j0;
+            out[i] = bilinear(px[(j0 - minRow) * pw + i0 - minCol], px[(j0 - minRow) * pw + i1 - minCol],
                     px[(j1 - minRow) * pw + i0 - minCol], px[(j1 - minRow) * pw + i1 - minCol], fx, fy);
         }
         return out;
+    }
+
+    /**
+     * The image's pixels per grid cell across and down, rounded down (at least 1): measured at the centre of the
+     * grid the cells were cut from ({@link GridGeometry#placement()}), so that every window and tile of a picture
+     * reads the image with the same steps.
+     */
+    static int[] steps(DrapeImage image, MathTransform mt, GridGeometry grid) {
+        GridGeometry.Placement p = grid.placement();
+        double col = p.rootWidth() / 2.0 - p.col();
+        double row = p.rootHeight() / 2.0 - p.row();
+        double[] xy = {grid.centerX(col), grid.centerY(row), grid.centerX(col + 1), grid.centerY(row),
+            grid.centerX(col), grid.centerY(row + 1)};
+        transform(mt, xy);
+        GridGeometry g = image.grid();
+        double across = Math.hypot((xy[2] - xy[0]) / g.cellWidth(), (xy[3] - xy[1]) / g.cellHeight());
+        double down = Math.hypot((xy[4] - xy[0]) / g.cellWidth(), (xy[5] - xy[1]) / g.cellHeight());
+        return new int[] {step(across, g.width()), step(down, g.height())};
+    }
+
+    private static int step(double pixelsPerCell, int pixels) {
+        if (!(pixelsPerCell >= MIN_STEP)) {
+            return 1;   // also NaN: the centre could not be transformed
+        }
+        return (int) Math.min(Math.floor(pixelsPerCell + SNAP), pixels);
     }
 
     private static double snap(double u) {

@@ -279,32 +279,65 @@ public record DrapeImage(Path file, GridGeometry grid, boolean crsGiven) {
      * @throws IOException when the pixels cannot be decoded; the message names the file
      */
     public int[] readArgb(int col, int row, int width, int height) throws IOException {
-        if (col < 0 || row < 0 || width < 1 || height < 1 || col + width > grid.width()
-                || row + height > grid.height()) {
-            throw new IllegalArgumentException("pixels " + col + "," + row + " " + width + "×" + height
-                    + " are not inside the " + grid.width() + "×" + grid.height() + " image");
+        return readArgb(col, row, width, height, 1, 1);
+    }
+
+    /**
+     * Decodes every {@code stepX}-th column and {@code stepY}-th row of a part of the image: columns {@code col + i ·
+     * stepX} for i &lt; {@code width}, rows {@code row + j · stepY} for j &lt; {@code height}. The decoder skips the
+     * other pixels as it goes, so an image much finer than the picture is never held whole.
+     *
+     * @param col    first column
+     * @param row    first row
+     * @param width  columns returned, ≥ 1
+     * @param height rows returned, ≥ 1
+     * @param stepX  the column step, ≥ 1
+     * @param stepY  the row step, ≥ 1
+     * @return non-premultiplied 0xAARRGGBB, row-major, {@code width} across (opaque where the image has no alpha)
+     * @throws IOException when the pixels cannot be decoded; the message names the file
+     */
+    public int[] readArgb(int col, int row, int width, int height, int stepX, int stepY) throws IOException {
+        long lastCol = col + (long) (width - 1) * stepX;
+        long lastRow = row + (long) (height - 1) * stepY;
+        if (col < 0 || row < 0 || width < 1 || height < 1 || stepX < 1 || stepY < 1 || lastCol >= grid.width()
+                || lastRow >= grid.height()) {
+            throw new IllegalArgumentException("pixels from " + col + "," + row + ", " + width + "×" + height
+                    + " every " + stepX + "×" + stepY + ", are not inside the " + grid.width() + "×"
+                    + grid.height() + " image");
         }
         boolean tiff = SidecarCrs.extension(file).startsWith("tif");
-        // TwelveMonkeys fails on regions narrower than a tiled image: TIFFs are read at full width
+        // TwelveMonkeys (3.15.0) fails on regions narrower than a tiled image, and its subsampling picks samples of
+        // neighbouring pixels: TIFFs are decoded at full width and resolution, and the pixels picked here
         int readCol = tiff ? 0 : col;
-        int readWidth = tiff ? grid.width() : width;
+        int readWidth = tiff ? grid.width() : (int) (lastCol - col + 1);
+        int pickX = tiff ? stepX : 1;
+        int pickY = tiff ? stepY : 1;
         ImageReader reader = tiff ? new TIFFImageReaderSpi().createReaderInstance() : readerOf(file);
         BufferedImage image;
         try (ImageInputStream in = new FileImageInputStream(file.toFile())) {
             reader.setInput(in, true, true);
             ImageReadParam param = reader.getDefaultReadParam();
-            param.setSourceRegion(new Rectangle(readCol, row, readWidth, height));
+            param.setSourceRegion(new Rectangle(readCol, row, readWidth, (int) (lastRow - row + 1)));
+            if (!tiff && (stepX > 1 || stepY > 1)) {
+                param.setSourceSubsampling(stepX, stepY, 0, 0);
+            }
             image = reader.read(0, param);
         } catch (IOException | RuntimeException e) {
             throw new DrapeFileException(file, "cannot decode its pixels (" + e.getMessage() + ")", e);
         } finally {
             reader.dispose();
         }
-        return argb(image, col - readCol, width, height);
+        int skip = col - readCol;
+        if (image.getWidth() <= skip + (width - 1) * pickX || image.getHeight() <= (height - 1) * pickY) {
+            throw new DrapeFileException(file, "the decoder gave " + image.getWidth() + "×" + image.getHeight()
+                    + " pixels, fewer than asked for");
+        }
+        return argb(image, skip, pickX, pickY, width, height);
     }
 
-    /** The pixels of {@code image} from column {@code skip}, as non-premultiplied ARGB. */
-    private int[] argb(BufferedImage image, int skip, int width, int height) throws DrapeFileException {
+    /** Every {@code stepX}-th pixel of every {@code stepY}-th row of {@code image} from column {@code skip}. */
+    private int[] argb(BufferedImage image, int skip, int stepX, int stepY, int width, int height)
+            throws DrapeFileException {
         Raster raster = image.getRaster();
         ColorModel cm = image.getColorModel();
         int bands = raster.getNumBands();
@@ -313,7 +346,7 @@ public record DrapeImage(Path file, GridGeometry grid, boolean crsGiven) {
         boolean premultiplied = cm.isAlphaPremultiplied();
         for (int r = 0; r < height; r++) {
             for (int c = 0; c < width; c++) {
-                raster.getPixel(skip + c, r, px);
+                raster.getPixel(skip + c * stepX, r * stepY, px);
                 int argb;
                 if (cm instanceof IndexColorModel index) {
                     argb = index.getRGB(px[0]);

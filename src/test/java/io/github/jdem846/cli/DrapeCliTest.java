@@ -208,6 +208,35 @@ class DrapeCliTest {
         assertTrue(t.err().contains("tiles"), "rendered in tiles: " + t.err());
     }
 
+    @Test
+    void anImageFourTimesFinerIsReadEveryFourthPixelTheSameFromGeoTiffAndPng() throws IOException {
+        // our own relief at 4 × the DEM's resolution (a smooth surface: neighbouring pixels differ), as an RGBA
+        // GeoTIFF and as a PNG with .pgw and .prj; Jacksboro is latitude/longitude, so are both images
+        String jacksboro = "testdata/dem/jacksboro_srtm3s_wgs84.tif";
+        String window = "cells:100,100,60,40";
+        Path fineTif = dir.resolve("fine.tif");
+        Path finePng = dir.resolve("fine.png");
+        run("render", jacksboro, "--window", window, "--scale", "4", "-o", fineTif.toString());
+        run("render", jacksboro, "--window", window, "--scale", "4", "--world-file", "-o", finePng.toString());
+        Path a = dir.resolve("a.png");
+        Path b = dir.resolve("b.png");
+        run("render", jacksboro, "--window", window, "--hillshade", "none", "--drape", fineTif.toString(), "-o",
+                a.toString());
+        run("render", jacksboro, "--window", window, "--hillshade", "none", "--drape", finePng.toString(), "-o",
+                b.toString());
+        BufferedImage fine = read(finePng);
+        BufferedImage fromTif = read(a);
+        BufferedImage fromPng = read(b);
+        assertEquals(240, fine.getWidth());
+        for (int y = 0; y < 40; y++) {
+            for (int x = 0; x < 60; x++) {
+                // cell (x, y) spans pixels 4x..4x+3: the one read is the block's third, 4x + 2, nearest the centre
+                assertEquals(fine.getRGB(4 * x + 2, 4 * y + 2), fromTif.getRGB(x, y), "GeoTIFF at " + x + "," + y);
+                assertEquals(fromTif.getRGB(x, y), fromPng.getRGB(x, y), "PNG at " + x + "," + y);
+            }
+        }
+    }
+
     private static int maxChannelDifference(int p, int q) {
         int worst = 0;
         for (int shift = 0; shift <= 24; shift += 8) {

@@ -102,6 +102,40 @@ class DrapeTest {
     }
 
     @Test
+    void anImageMuchFinerThanTheGridIsReadEveryKthPixelNearestEachCentre() throws IOException {
+        // 5 × 3 cells of 8 m; the image 20 × 12 pixels of 2 m: each cell a block of 4 × 4 pixels of its own colour,
+        // but for one stray pixel per block at the block's north-west corner (never the one read)
+        BufferedImage img = new BufferedImage(20, 12, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < 12; y++) {
+            for (int x = 0; x < 20; x++) {
+                boolean stray = x % 4 == 0 && y % 4 == 0;
+                img.setRGB(x, y, stray ? 0xFFFFFF : blockColour(x / 4, y / 4));
+            }
+        }
+        Path png = dir.resolve("fine.png");
+        ImageIO.write(img, "png", png.toFile());
+        Files.writeString(dir.resolve("fine.pgw"), "2\n0\n0\n-2\n1\n23\n");
+        DrapeImage image = DrapeImage.open(png);
+        Drape drape = new Drape(List.of(image));
+        GridGeometry grid = GridGeometry.metric(5, 3, 8);
+        assertArrayEquals(new int[] {4, 4}, Drape.steps(image, null, grid));
+        int[] argb = drape.argb(grid, CellWindow.whole(5, 3));
+        for (int r = 0; r < 3; r++) {
+            for (int c = 0; c < 5; c++) {
+                assertEquals(0xFF000000 | blockColour(c, r), argb[r * 5 + c], "cell " + c + "," + r);
+            }
+        }
+        // a window reads with the same steps and gets the same colours
+        assertArrayEquals(new int[] {4, 4}, Drape.steps(image, null, grid.window(3, 1, 2, 2)));
+        int[] part = drape.argb(grid.window(3, 1, 2, 2), CellWindow.whole(2, 2));
+        assertArrayEquals(new int[] {argb[8], argb[9], argb[13], argb[14]}, part);
+    }
+
+    private static int blockColour(int c, int r) {
+        return (40 + c * 40) << 16 | (60 + r * 80) << 8 | 7;
+    }
+
+    @Test
     void grayPixelsKeepTheirLevels() throws IOException {
         BufferedImage img = new BufferedImage(3, 1, BufferedImage.TYPE_BYTE_GRAY);
         img.getRaster().setPixels(0, 0, 3, 1, new int[] {0, 100, 255});
