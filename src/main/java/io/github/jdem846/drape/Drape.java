@@ -28,8 +28,9 @@ import org.opengis.util.FactoryException;
  * edge pixels are extended.
  *
  * <p>Only the pixels under the cells asked for are decoded ({@link DrapeImage#readArgb}), so a window or a tile of
- * a picture reads only its part of the image, and gets the colours the whole picture gives it. Immutable and
- * thread-safe.
+ * a picture reads only its part of the image, and gets the colours the whole picture gives it. An image at least
+ * {@value #MIN_STEP} times finer than the grid is read every k-th pixel and each cell takes the pixel read nearest
+ * its centre (no averaging). Immutable and thread-safe.
  *
  * @param images the images, bottom first
  */
