@@ -29,7 +29,7 @@ import org.opengis.util.FactoryException;
  *
  * <p>Only the pixels under the cells asked for are decoded ({@link DrapeImage#readArgb}), so a window or a tile of
  * a picture reads only its part of the image, and gets the colours the whole picture gives it. An image at least
- * {@value #MIN_STEP} times finer than the grid is read every k-th pixel and each cell takes the pixel read nearest
+ * 3 times finer than the grid is read every k-th pixel and each cell takes the pixel read nearest
  * its centre (no averaging). Immutable and thread-safe.
  *
  * @param images the images, bottom first
@@ -85,7 +85,7 @@ public record Drape(List<DrapeImage> images) implements ColorLayer {
 
     /**
      * {@inheritDoc} Each image's CRS must be transformable from the picture's, and at least one image must overlap
-     * the picture (its footprint, from {@value #FOOTPRINT_STEPS} × {@value #FOOTPRINT_STEPS} points across the
+     * the picture (its footprint, from 65 × 65 points across the
      * picture transformed into the image's CRS).
      */
     @Override
@@ -210,7 +210,7 @@ public record Drape(List<DrapeImage> images) implements ColorLayer {
 
     /**
      * One image's colour at each cell of {@code area}: bilinear on premultiplied colours, 0 outside the image. An
-     * image at least {@value #MIN_STEP} times finer than the grid is read every k-th pixel ({@link #steps}), k the
+     * image at least 3 times finer than the grid is read every k-th pixel ({@link #steps}), k the
      * whole number of its pixels a cell spans, and each cell takes the pixel read nearest its centre.
      */
     private static int[] sample(DrapeImage image, MathTransform mt, GridGeometry grid, CellWindow area)
