@@ -32,8 +32,8 @@ import javax.imageio.stream.ImageInputStream;
  * A georeferenced picture to drape over a relief, as opened: its file, the grid of its pixels in its CRS, and
  * whether that CRS was given. Read from
  * <ul>
- *   <li>a GeoTIFF of 8-bit samples, gray, gray and alpha, RGB or RGBA (or a palette), placed by its tags (read as a DEM's are)
- *   or else by a world file ({@code .tfw}, {@code .tifw}, {@code .wld});</li>
+ *   <li>a GeoTIFF of 8-bit samples, gray, gray and alpha, RGB or RGBA (or a palette), placed by its tags (read as a
+ *   DEM's are) or else by a world file ({@code .tfw}, {@code .tifw}, {@code .wld});</li>
  *   <li>a PNG or JPEG placed by its world file ({@code .pgw}/{@code .pngw}, {@code .jgw}/{@code .jpgw}, or
  *   {@code .wld}), its CRS from a {@code .prj} or GDAL's {@code .aux.xml} beside it (as {@code render
  *   --world-file} writes them).</li>
