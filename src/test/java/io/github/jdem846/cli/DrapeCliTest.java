@@ -237,6 +237,25 @@ class DrapeCliTest {
         }
     }
 
+    @Test
+    void theThreeDimensionalViewIsTexturedWithTheDrape() throws IOException {
+        Path plain = dir.resolve("plain.png");
+        Path draped = dir.resolve("draped.png");
+        Path blue = solidImage("blue", 0xFF0000FF);
+        String[] common = {"view", DEM, "--width", "240", "--height", "160", "--camera-elevation", "90"};
+        run(concat(common, "-o", plain.toString()));
+        run(concat(common, "-o", draped.toString(), "--drape", blue.toString()));
+        BufferedImage p = read(plain);
+        BufferedImage d = read(draped);
+        // seen from straight above, the middle of the picture is terrain: blue lit by eq. 8 (which moves red, green
+        // and blue alike, so red stays equal to green), where the tint (table 2: greens, browns, grays) was not
+        int c = d.getRGB(120, 80);
+        int t = p.getRGB(120, 80);
+        assertTrue((c & 0xFF) > (c >> 16 & 0xFF) + 100 && (c >> 16 & 0xFF) == (c >> 8 & 0xFF),
+                Integer.toHexString(c));
+        assertTrue((t & 0xFF) < (t >> 16 & 0xFF) + 100, Integer.toHexString(t));
+    }
+
     private static int maxChannelDifference(int p, int q) {
         int worst = 0;
         for (int shift = 0; shift <= 24; shift += 8) {
