@@ -18,8 +18,9 @@ record JobMemory(int perPixel, int outputBytes) {
     static JobMemory of(Product product, Scene scene) {
         int shadow = !scene.hasShadows() ? 0 : scene.shadowOptions().softShadows() ? 12 : Float.BYTES;
         int sky = scene.hasAmbient() ? Float.BYTES : 0;
-        // a drape's colours, and the image's pixels under them (about as many, at the picture's resolution)
-        int drape = scene.drape() != null ? 2 * Integer.BYTES : 0;
+        // a drape's colours, the cells' coordinates in its CRS while they are sampled, and the image's pixels
+        // under them (about as many, at the picture's resolution)
+        int drape = scene.drape() != null ? 2 * Integer.BYTES + 2 * Double.BYTES : 0;
         return switch (product) {
             case RELIEF -> new JobMemory(Integer.BYTES + shadow + sky + drape, Integer.BYTES);
             case SKY_VIEW -> new JobMemory(Byte.BYTES + Float.BYTES, Byte.BYTES);
