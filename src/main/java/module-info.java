@@ -12,6 +12,7 @@
 // requires-automatic: TwelveMonkeys has no module-info; module: the name ends in digits (jdem846)
 @SuppressWarnings({"requires-automatic", "module"})
 module io.github.jdem846 {
+    exports io.github.jdem846.drape;
     exports io.github.jdem846.geo;
     exports io.github.jdem846.io;
     exports io.github.jdem846.job;

@@ -45,6 +45,9 @@ public final class RenderCommand implements Callable<Integer> {
     @Mixin
     OverlayOptions overlays;
 
+    @Mixin
+    DrapeOptions drape;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -53,7 +56,7 @@ public final class RenderCommand implements Callable<Integer> {
         input.requireConsistent();
         sun.requireConsistent(input.bodyOptions);
         sceneOptions.noteUnused(spec.commandLine().getErr());
-        ReliefJob job = input.job(Product.RELIEF).withScene(sceneOptions.scene()).withSun(sun.sun())
+        ReliefJob job = input.job(Product.RELIEF).withScene(drape.apply(sceneOptions.scene())).withSun(sun.sun())
                 .withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
         overlays.requireValidStyles(spec);

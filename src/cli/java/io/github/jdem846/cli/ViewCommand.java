@@ -92,6 +92,9 @@ public final class ViewCommand implements Callable<Integer> {
     SceneOptions sceneOptions;
 
     @Mixin
+    DrapeOptions drape;
+
+    @Mixin
     SunOptions sun;
 
     @Mixin
@@ -130,7 +133,7 @@ public final class ViewCommand implements Callable<Integer> {
                 WriteOptions.defaults()));
         ReliefJob relief = ReliefJob.of(input.input() != null ? input.input() : BundledSample.extract())
                 .withProduct(Product.RELIEF)
-                .withWindow(input.window).withBody(input.body()).withScene(sceneOptions.scene())
+                .withWindow(input.window).withBody(input.body()).withScene(drape.apply(sceneOptions.scene()))
                 .withSun(sun.sun()).withExecution(execution.settings()).withMemory(execution.memory());
         PrintWriter err = spec.commandLine().getErr();
         PhaseTimes times = new PhaseTimes();

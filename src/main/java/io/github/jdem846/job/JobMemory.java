@@ -18,10 +18,13 @@ record JobMemory(int perPixel, int outputBytes) {
     static JobMemory of(Product product, Scene scene) {
         int shadow = !scene.hasShadows() ? 0 : scene.shadowOptions().softShadows() ? 12 : Float.BYTES;
         int sky = scene.hasAmbient() ? Float.BYTES : 0;
+        // a drape's colours, the cells' coordinates in its CRS while they are sampled, and the image's pixels
+        // under them (about as many, at the picture's resolution)
+        int drape = scene.drape() != null ? 2 * Integer.BYTES + 2 * Double.BYTES : 0;
         return switch (product) {
-            case RELIEF -> new JobMemory(Integer.BYTES + shadow + sky, Integer.BYTES);
+            case RELIEF -> new JobMemory(Integer.BYTES + shadow + sky + drape, Integer.BYTES);
             case SKY_VIEW -> new JobMemory(Byte.BYTES + Float.BYTES, Byte.BYTES);
-            case TINT -> new JobMemory(Integer.BYTES, Integer.BYTES);
+            case TINT -> new JobMemory(Integer.BYTES + drape, Integer.BYTES);
             case HILLSHADE -> new JobMemory(Byte.BYTES, Byte.BYTES);
             case SHADOWS -> new JobMemory(Byte.BYTES + shadow, Byte.BYTES);
         };

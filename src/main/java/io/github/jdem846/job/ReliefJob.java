@@ -289,6 +289,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
             return renderInMemory(in, planned, s, listener);
         } catch (IOException e) {
             throw Interrupts.interruptedOr(e);
+        } catch (java.io.UncheckedIOException e) {   // a draped image that cannot be read
+            throw Interrupts.interruptedOr(e.getCause());
         }
     }
 
@@ -315,6 +317,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         Scene s = productScene();
         CellWindow whole = CellWindow.whole(dem.width(), dem.height());
         Dem measured = dem.withGeometry(mercatorScale.apply(dem.geometry()));
+        requireDrapeCovers(s, measured.geometry());
         Sun.Lighting lighting = lighting(measured.geometry(), listener);
         AreaRenderer renderer = new AreaRenderer(product, s, lighting, execution);
         return result(null, dem.geometry(), renderer.render(measured, whole, 0, 0, listener), lighting, listener);
@@ -405,6 +408,8 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
             }
         } catch (IOException e) {
             throw Interrupts.interruptedOr(e);
+        } catch (java.io.UncheckedIOException e) {   // a draped image that cannot be read
+            throw Interrupts.interruptedOr(e.getCause());
         }
         written.notices().forEach(listener::notice);
         listener.phaseDone("write");
@@ -460,6 +465,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         ScaleNotice.of(planned.plan().info().geometry(), s).ifPresent(listener::notice);
         Scene scene = forWholeFile(s, loaded.fileStatistics());
         CellWindow area = loaded.area();
+        requireDrapeCovers(scene, planned.plan().pictureGeometry());
         Sun.Lighting lighting = lighting(planned.plan().pictureGeometry(), listener);
         AreaRenderer renderer = new AreaRenderer(product, scene, lighting, execution);
         AreaRenderer.Pixels pixels = renderer.render(loaded.dem(), area, area.col(), area.row(), listener);
@@ -479,6 +485,7 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         ScaleNotice.of(plan.info().geometry(), s).ifPresent(notices::add);
         Scene scene = forWholeFile(s, statistics);
         GridGeometry picture = plan.pictureGeometry();
+        requireDrapeCovers(scene, picture);
         Sun.Lighting lighting = lighting(picture, listener);
         int[] halo = TileHalo.of(plan, scene, statistics, lighting);
         int unit = sun.perTile() ? execution.tileSize() : RenderSettings.MIN_TILE_SIZE;
@@ -501,6 +508,13 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         SunPosition position = lighting == null ? null : lighting.sun();
         return pixels.argb() != null ? ReliefResult.rgba(this, source, geometry, pixels.argb(), position)
                 : ReliefResult.gray(this, source, geometry, pixels.gray(), position);
+    }
+
+    /** Refuses a drape that cannot be placed on the picture (a relief's or a tint's), before any cell is drawn. */
+    private void requireDrapeCovers(Scene s, GridGeometry picture) {
+        if (s.drape() != null && (product == Product.RELIEF || product == Product.TINT)) {
+            s.drape().requireCovers(picture);
+        }
     }
 
     /** The light over the picture (null for a tint, which is not lit); the listener hears the sun by time. */

@@ -106,6 +106,7 @@ public final class Renderer {
      * @param progress told the stage and the work done; {@link RenderProgress#NONE} for no reports
      * @return the picture of {@code area}, one pixel per cell
      * @throws InterruptedException when the calling thread is interrupted; no picture is returned
+     * @throws java.io.UncheckedIOException when the scene's drape cannot be read (its cause names the file)
      */
     public RenderedRelief render(Dem dem, Scene scene, CellWindow area, RenderProgress progress)
             throws InterruptedException {
@@ -136,6 +137,7 @@ public final class Renderer {
         float[] values = dem.backingArray();
         int demWidth = dem.width();
         boolean covered = dem.hasCoverage();
+        int[] drape = drape(dem, scene, area);
         new TileExecutor(pool, settings.tileSize()).forEachTile(width, height, RenderProgress.SHADING, progress,
                 (c0, r0, w, h) -> {
                     float[] dot = new float[w * h];
@@ -150,8 +152,10 @@ public final class Renderer {
                         for (int c = 0; c < w; c++) {
                             double s = shadow == null ? 0 : shadow[out + c];
                             double v = sky == null ? 1 : sky[out + c];
-                            int pixel = compositor.compose(tint.argb(values[in + c]), dot[r * w + c], s, v,
-                                    scene.fade());
+                            float elevation = values[in + c];
+                            int base = drape == null || elevation != elevation ? tint.argb(elevation)
+                                    : ColorLayer.over(drape[out + c], tint.argb(elevation));
+                            int pixel = compositor.compose(base, dot[r * w + c], s, v, scene.fade());
                             argb[out + c] = covered ? withCoverage(pixel, dem.coverage(area.col() + c0 + c,
                                     area.row() + r0 + r)) : pixel;
                         }
@@ -159,6 +163,21 @@ public final class Renderer {
                 });
         return new RenderedRelief(width, height, argb,
                 dem.geometry().window(area.col(), area.row(), width, height));
+    }
+
+    /**
+     * The scene's draped colours over {@code area} ({@link Scene#drape()}), or null without a drape; an image that
+     * cannot be read throws {@link java.io.UncheckedIOException} with the {@link java.io.IOException} naming it.
+     */
+    private static int[] drape(Dem dem, Scene scene, CellWindow area) {
+        if (scene.drape() == null) {
+            return null;
+        }
+        try {
+            return scene.drape().argb(dem.geometry(), area);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e.getMessage(), e);
+        }
     }
 
     /** {@code argb} with its alpha scaled by {@code coverage} (an anti-aliased edge of no-data). */

@@ -32,11 +32,13 @@ import java.util.Objects;
  *                         is computed ({@link SkyView}), at 0 it is not
  * @param skyDirections    the number of azimuths of the sky-view factor ({@link SkyViewOptions#directions()})
  * @param blend            how the shading is laid on the tint ({@link Blend}; the original's: eq. 8, opaque)
+ * @param drape            colours laid over the tint before the light (a draped image, {@link
+ *                         io.github.jdem846.drape.Drape}), or {@code null} for the tint alone
  */
 public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions hillshadeOptions,
                     ShadowAlgorithm shadows, ShadowOptions shadowOptions, LightField light,
                     double shadowIntensity, double fade, ElevationStatistics tintRange, LightModel lightModel,
-                    double ambient, int skyDirections, Blend blend) {
+                    double ambient, int skyDirections, Blend blend, ColorLayer drape) {
 
     /**
      * Checks that the options and light are given and that the weights are in range.
@@ -56,6 +58,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      *     computed ({@link SkyView}), at 0 it is not
      * @param skyDirections the number of azimuths of the sky-view factor ({@link SkyViewOptions#directions()})
      * @param blend how the shading is laid on the tint ({@link Blend}; the original's: eq. 8, opaque)
+     * @param drape colours laid over the tint before the light (a draped image), or {@code null} for the tint alone
      */
     public Scene {
         Objects.requireNonNull(hillshadeOptions, "hillshadeOptions");
@@ -89,7 +92,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
         return new Scene(ColorRamp.defaultRamp(), HillshadeMethod.JDEM846, HillshadeOptions.DEFAULTS,
                 ShadowAlgorithm.NONE, ShadowOptions.DEFAULTS, LightField.uniform(LightDirection.ORIGINAL_DEFAULT),
                 Compositor.DEFAULT_SHADOW_INTENSITY, 0, null, LightModel.JDEM846, 0, SkyViewOptions.DEFAULT_DIRECTIONS,
-                Blend.DEFAULT);
+                Blend.DEFAULT, null);
     }
 
     /**
@@ -99,7 +102,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withTint(ColorRamp ramp) {
-        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
+        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
     }
 
     /**
@@ -109,7 +112,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withHillshade(HillshadeMethod method) {
-        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
+        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
     }
 
     /**
@@ -119,7 +122,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withHillshadeOptions(HillshadeOptions options) {
-        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
+        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
     }
 
     /**
@@ -129,7 +132,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadows(ShadowAlgorithm algorithm) {
-        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
+        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
     }
 
     /**
@@ -139,7 +142,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadowOptions(ShadowOptions options) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
     }
 
     /**
@@ -159,7 +162,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withLight(LightField field) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
     }
 
     /**
@@ -169,7 +172,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadowIntensity(double intensity) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange, lightModel, ambient, skyDirections, blend);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
     }
 
     /**
@@ -180,7 +183,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withFade(double darkening) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity,
-                darkening, tintRange, lightModel, ambient, skyDirections, blend);
+                darkening, tintRange, lightModel, ambient, skyDirections, blend, drape);
     }
 
     /**
@@ -191,7 +194,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withTintRange(ElevationStatistics range) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                range, lightModel, ambient, skyDirections, blend);
+                range, lightModel, ambient, skyDirections, blend, drape);
     }
 
     /**
@@ -202,7 +205,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withLightModel(LightModel model) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, model, ambient, skyDirections, blend);
+                tintRange, model, ambient, skyDirections, blend, drape);
     }
 
     /**
@@ -213,7 +216,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withAmbient(double weight) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, weight, skyDirections, blend);
+                tintRange, lightModel, weight, skyDirections, blend, drape);
     }
 
     /**
@@ -224,7 +227,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withSkyDirections(int directions) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, ambient, directions, blend);
+                tintRange, lightModel, ambient, directions, blend, drape);
     }
 
     /**
@@ -235,7 +238,19 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withBlend(Blend b) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, ambient, skyDirections, b);
+                tintRange, lightModel, ambient, skyDirections, b, drape);
+    }
+
+    /**
+     * The same scene with colours laid over the tint, cell by cell, before the light: a draped image ({@link
+     * io.github.jdem846.drape.Drape}); where the layer is transparent the tint shows.
+     *
+     * @param layer the colours, or {@code null} for the tint alone
+     * @return the new scene
+     */
+    public Scene withDrape(ColorLayer layer) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
+                tintRange, lightModel, ambient, skyDirections, blend, layer);
     }
 
     /** {@return true when the sky-view factor is to be computed (an ambient weight above 0)} */

@@ -77,6 +77,17 @@ class BadInputMatrixTest {
                 + "<DstRect xOff=\"0\" yOff=\"0\" xSize=\"1197\" ySize=\"643\"/></SimpleSource>"
                 + "</VRTRasterBand></VRTDataset>\n");
 
+        Path drape = Files.createDirectories(in.resolve("drape"));   // images to drape, good and bad
+        Files.copy(Path.of("testdata/golden/drape/bigtujunga_crop_table2_utm.png"), drape.resolve("far.png"));
+        Files.writeString(drape.resolve("far.pgw"), "30\n0\n0\n-30\n15\n-15\n");   // at (0, 0), far away
+        Files.copy(Path.of("testdata/golden/drape/bigtujunga_crop_table2_utm.png"), drape.resolve("bare.png"));
+        Files.copy(Path.of("testdata/golden/drape/bigtujunga_crop_table2_utm.png"), drape.resolve("badprj.png"));
+        Files.copy(Path.of("testdata/golden/drape/bigtujunga_crop_table2_utm.wld"), drape.resolve("badprj.wld"));
+        Files.writeString(drape.resolve("badprj.prj"), "PROJCS[nonsense");
+        Files.copy(Path.of("testdata/golden/drape/bigtujunga_crop_table2_utm.wld"), drape.resolve("rot.wld"));
+        Files.copy(Path.of("testdata/golden/drape/bigtujunga_crop_table2_utm.png"), drape.resolve("rot.png"));
+        Files.writeString(drape.resolve("rot.wld"), "30\n0.5\n0.5\n-30\n388928\n3804302\n");
+        Files.writeString(drape.resolve("text.png"), "not a picture");
         Path out = Files.createDirectories(root.resolve("out"));
         Path readOnly = Files.writeString(out.resolve("readonly.png"), "an earlier picture");
         Files.setPosixFilePermissions(readOnly, PosixFilePermissions.fromString("r--r--r--"));
@@ -227,6 +238,30 @@ class BadInputMatrixTest {
             rows.add(row(2, base + "--window NaN,0,1,1", "--window", "finite"));
         }
         return rows.stream();
+    }
+
+    static Stream<Arguments> drapeImages() {
+        String render = "render IN/dem.tif -q -o OUT/relief.png --drape IN/";
+        return Stream.of(
+                row(1, render + "drape/missing.tif", "missing.tif", "no such file"),
+                row(1, render + "drape", "drape", "is not a file"),
+                row(1, render + "notes.txt", "notes.txt", "unknown image type", ".tif"),
+                row(1, render + "drape/text.png", "text.png", "not a PNG or JPEG"),
+                row(1, render + "dem.tif", "dem.tif", "not an 8-bit picture", "16 bits"),
+                row(1, render + "drape/bare.png", "bare.png", "no georeference", ".pgw"),
+                row(1, render + "drape/rot.png", "rot.wld", "rotated", "gdalwarp"),
+                row(1, render + "drape/badprj.png", "badprj.prj", "not a CRS in WKT"),
+                row(1, render + "drape/far.png", "far.png", "does not overlap the picture"),
+                row(1, "render IN/bt.flt -q -o OUT/relief.png --drape IN/drape/far.png", "far.png",
+                        "does not overlap"));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("drapeImages")
+    @Timeout(value = 30, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aDrapeThatCannotBeUsedIsOneLineNamingItAndNoPicture(String args, int exit, List<String> mentions)
+            throws IOException {
+        assertRefused(args, exit, mentions);
     }
 
     @ParameterizedTest(name = "{0}")
