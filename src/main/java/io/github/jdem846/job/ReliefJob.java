@@ -421,11 +421,11 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         if (s.hasShadows()) {
             halo = halo.union(shadowHalo(s));
         }
-        if (s.hasAmbient() || product == Product.SKY_VIEW) {
-            halo = halo.union(DemLoader.Halo.uniform(SkyView.HALO_CELLS));
-        }
         DemInfo read = DemReader.inspect(files).withDefaultEllipsoid(body.ellipsoid());
         DemInfo info = read.withGeometry(mercatorScale.apply(read.geometry()));
+        if (s.hasAmbient() || product == Product.SKY_VIEW) {
+            halo = halo.union(DemLoader.Halo.uniform(SkyView.haloCells(info.geometry(), s.skyViewOptions())));
+        }
         DemLoader.StreamedStatistics statistics = new DemLoader.StreamedStatistics(files, listener);
         return new Planned(DemLoader.plan(info, body.ellipsoid(), window, size, halo, statistics), statistics);
     }

@@ -31,11 +31,13 @@ import java.util.Objects;
  * @param ambient          the weight W of the light of the sky, 0 to 1; above 0 the sky-view factor of every cell
  *                         is computed ({@link SkyView}), at 0 it is not
  * @param skyDirections    the number of azimuths of the sky-view factor ({@link SkyViewOptions#directions()})
+ * @param skyRadius        the sky-view factor's search radius in ground metres ({@link SkyViewOptions#radius()});
+ *                         {@link SkyViewOptions#UNBOUNDED} for none
  */
 public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions hillshadeOptions,
                     ShadowAlgorithm shadows, ShadowOptions shadowOptions, LightField light,
                     double shadowIntensity, double fade, ElevationStatistics tintRange, LightModel lightModel,
-                    double ambient, int skyDirections) {
+                    double ambient, int skyDirections, double skyRadius) {
 
     /**
      * Checks that the options and light are given and that the weights are in range.
@@ -54,6 +56,8 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @param ambient the weight W of the light of the sky, 0 to 1; above 0 the sky-view factor of every cell is
      *     computed ({@link SkyView}), at 0 it is not
      * @param skyDirections the number of azimuths of the sky-view factor ({@link SkyViewOptions#directions()})
+     * @param skyRadius the sky-view factor's search radius in ground metres ({@link SkyViewOptions#radius()});
+     *     {@link SkyViewOptions#UNBOUNDED} for none
      */
     public Scene {
         Objects.requireNonNull(hillshadeOptions, "hillshadeOptions");
@@ -70,7 +74,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
         if (!(ambient >= 0 && ambient <= 1)) {
             throw new IllegalArgumentException("ambient (sky light) weight must be between 0 and 1, got " + ambient);
         }
-        new SkyViewOptions(skyDirections, 1);                 // validates the number of directions
+        new SkyViewOptions(skyDirections, 1, skyRadius);      // validates the number of directions and the radius
     }
 
     /**
@@ -84,7 +88,8 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
     public static Scene defaults() {
         return new Scene(ColorRamp.defaultRamp(), HillshadeMethod.JDEM846, HillshadeOptions.DEFAULTS,
                 ShadowAlgorithm.NONE, ShadowOptions.DEFAULTS, LightField.uniform(LightDirection.ORIGINAL_DEFAULT),
-                Compositor.DEFAULT_SHADOW_INTENSITY, 0, null, LightModel.JDEM846, 0, SkyViewOptions.DEFAULT_DIRECTIONS);
+                Compositor.DEFAULT_SHADOW_INTENSITY, 0, null, LightModel.JDEM846, 0, SkyViewOptions.DEFAULT_DIRECTIONS,
+                SkyViewOptions.UNBOUNDED);
     }
 
     /**
@@ -94,7 +99,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withTint(ColorRamp ramp) {
-        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius);
     }
 
     /**
@@ -104,7 +109,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withHillshade(HillshadeMethod method) {
-        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius);
     }
 
     /**
@@ -114,7 +119,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withHillshadeOptions(HillshadeOptions options) {
-        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius);
     }
 
     /**
@@ -124,7 +129,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadows(ShadowAlgorithm algorithm) {
-        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius);
     }
 
     /**
@@ -134,7 +139,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadowOptions(ShadowOptions options) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius);
     }
 
     /**
@@ -154,7 +159,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withLight(LightField field) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius);
     }
 
     /**
@@ -164,7 +169,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadowIntensity(double intensity) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange, lightModel, ambient, skyDirections);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius);
     }
 
     /**
@@ -175,7 +180,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withFade(double darkening) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity,
-                darkening, tintRange, lightModel, ambient, skyDirections);
+                darkening, tintRange, lightModel, ambient, skyDirections, skyRadius);
     }
 
     /**
@@ -186,7 +191,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withTintRange(ElevationStatistics range) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                range, lightModel, ambient, skyDirections);
+                range, lightModel, ambient, skyDirections, skyRadius);
     }
 
     /**
@@ -197,7 +202,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withLightModel(LightModel model) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, model, ambient, skyDirections);
+                tintRange, model, ambient, skyDirections, skyRadius);
     }
 
     /**
@@ -208,7 +213,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withAmbient(double weight) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, weight, skyDirections);
+                tintRange, lightModel, weight, skyDirections, skyRadius);
     }
 
     /**
@@ -219,7 +224,18 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withSkyDirections(int directions) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, ambient, directions);
+                tintRange, lightModel, ambient, directions, skyRadius);
+    }
+
+    /**
+     * The same scene with another search radius of the sky-view factor.
+     *
+     * @param metres the radius in ground metres, positive; {@link SkyViewOptions#UNBOUNDED} for none
+     * @return the new scene
+     */
+    public Scene withSkyRadius(double metres) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
+                tintRange, lightModel, ambient, skyDirections, metres);
     }
 
     /** {@return true when the sky-view factor is to be computed (an ambient weight above 0)} */
@@ -228,13 +244,13 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
     }
 
     /**
-     * The settings of the sky-view stage: the scene's directions, heights exaggerated by the z-factor as the
+     * The settings of the sky-view stage: the scene's directions and search radius, heights exaggerated by the z-factor as the
      * hillshade shows them.
      *
      * @return the sky-view options
      */
     public SkyViewOptions skyViewOptions() {
-        return new SkyViewOptions(skyDirections, hillshadeOptions.zFactor());
+        return new SkyViewOptions(skyDirections, hillshadeOptions.zFactor(), skyRadius);
     }
 
     /**

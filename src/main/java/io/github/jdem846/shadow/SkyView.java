@@ -1,6 +1,7 @@
 package io.github.jdem846.shadow;
 
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.GridGeometry;
 import java.util.Objects;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ForkJoinPool;
@@ -30,6 +31,28 @@ public final class SkyView {
     public static final int HALO_CELLS = 128;
 
     private SkyView() {
+    }
+
+    /**
+     * The cells of terrain to read around a window or a tile of {@code grid} for its sky-view factor: {@link
+     * #HALO_CELLS} without a search radius; with one, the radius in cells of the grid's smallest ground size and 2
+     * more (a bilinear sample's second cell and the cell's first step), so that the piece's factor equals that of
+     * the whole grid, whose horizons then lie within the halo.
+     *
+     * @param grid    the grid the piece is cut from (its rows give the cells' ground sizes)
+     * @param options the directions, height scale and search radius
+     * @return the halo in cells, at least 2
+     */
+    public static int haloCells(GridGeometry grid, SkyViewOptions options) {
+        if (!options.bounded()) {
+            return HALO_CELLS;
+        }
+        double smallest = Double.POSITIVE_INFINITY;
+        for (int r = 0; r < grid.height(); r++) {
+            smallest = Math.min(smallest, Math.min(grid.cellWidthMeters(r), grid.cellHeightMeters(r)));
+        }
+        double cells = Math.floor(options.radius() / smallest) + 2;
+        return (int) Math.min(Integer.MAX_VALUE / 4, Math.max(2, cells));
     }
 
     /**
@@ -64,7 +87,8 @@ public final class SkyView {
         float[] sum = new float[area.width() * area.height()];
         int d = options.directions();
         for (int k = 0; k < d; k++) {
-            new HorizonSweep(dem, options.azimuth(k), options.heightScale()).addSines(area, sum, pool);
+            new HorizonSweep(dem, options.azimuth(k), options.heightScale(), options.radius()).addSines(area, sum,
+                    pool);
         }
         float[] v = dem.backingArray();
         int w = dem.width();
