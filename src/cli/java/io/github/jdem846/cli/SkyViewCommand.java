@@ -4,6 +4,7 @@ import io.github.jdem846.job.Product;
 import io.github.jdem846.job.ReliefJob;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.HillshadeOptions;
+import io.github.jdem846.shadow.SkyViewOptions;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -33,6 +34,12 @@ public final class SkyViewCommand implements Callable<Integer> {
             description = "Azimuths whose horizons are averaged, 4 to 360. Default: ${DEFAULT-VALUE}.")
     int directions;
 
+    @Option(names = {"--sky-radius", "--search-radius"}, paramLabel = "METRES",
+            converter = Converters.SkyRadius.class,
+            description = "Search horizons within this many metres of each cell (terrain farther away does not "
+                    + "count), as WhiteboxTools' and RVT's maximum search distance. Default: the whole grid.")
+    Double radius;
+
     @Option(names = {"--z-factor", "-z"}, paramLabel = "Z", defaultValue = "1",
             description = "Vertical exaggeration of the heights. Default: ${DEFAULT-VALUE}.")
     double zFactor;
@@ -60,7 +67,8 @@ public final class SkyViewCommand implements Callable<Integer> {
                     + e.getMessage());
         }
         Scene scene = Scene.defaults().withTint(null).withHillshade(null).withHillshadeOptions(heights)
-                .withAmbient(1).withSkyDirections(directions);
+                .withAmbient(1).withSkyDirections(directions)
+                .withSkyRadius(radius != null ? radius : SkyViewOptions.UNBOUNDED);
         ReliefJob job = input.job(Product.SKY_VIEW).withScene(scene).withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
         return new JobRunner(spec, input, output, execution, verbose).run(job, null);
