@@ -122,7 +122,6 @@ final class HorizonHulls implements LineHorizons {
             }
         }
         hint[q] = lo;
-        double best = (a[2 * lo + 1] - pz) / (px - a[2 * lo]);
-        return best > 0 ? best : 0;
+        return Math.max((a[2 * lo + 1] - pz) / (px - a[2 * lo]), 0);
     }
 }

@@ -147,7 +147,8 @@ final class HorizonSweep {
         double z11 = upCell < 0 ? z01 : across ? v[upCell + sj] : z10;
         double b = (z10 - z0) + m * (z01 - z0);
         double c = m * (z0 - z10 - z01 + z11);
-        double s = (c > 0 ? b + c : b) / metres;
+        // Math.max, not a branch: the sign of c is as good as random on rough terrain
+        double s = (b + Math.max(c, 0)) / metres;
         return s == s ? s : Double.NEGATIVE_INFINITY;
     }
 }

@@ -17,7 +17,9 @@ import java.util.concurrent.ForkJoinPool;
  * O(cells) sweep ({@link HorizonSweep}): lines parallel to it, one cell apart, each carrying the upper convex hull of
  * its terrain; distances in ground metres per row, so lat/lon grids are measured right at every latitude. The
  * horizon angle is measured on the bilinear surface along the lines and interpolated between the two lines around
- * a cell; on the axes and diagonals it is exact. No-data cells get NaN; no-data terrain is skipped.
+ * a cell; on the axes and diagonals it is exact. No-data cells get NaN; no-data terrain is skipped. With a search
+ * radius ({@link SkyViewOptions#radius()}) only terrain within it counts ({@link WindowedHulls}), and a piece of the
+ * grid read with {@link #haloCells} around it gives the whole grid's factors.
  *
  * <p>Work: D sweeps of the grid; azimuths one after another, each split into blocks of lines on the pool. The result
  * does not depend on the thread count. Interrupting the calling thread stops the work ({@link CancellationException}).
@@ -25,8 +27,8 @@ import java.util.concurrent.ForkJoinPool;
 public final class SkyView {
 
     /**
-     * Cells of terrain read around a window or a tile for its sky-view factor: a grid read in pieces sees horizons
-     * this far beyond each piece (the whole grid is seen when it is read whole).
+     * Cells of terrain read around a window or a tile for its sky-view factor without a search radius: a grid read
+     * in pieces sees horizons this far beyond each piece (the whole grid is seen when it is read whole).
      */
     public static final int HALO_CELLS = 128;
 
