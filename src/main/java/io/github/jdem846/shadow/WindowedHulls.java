@@ -10,11 +10,12 @@ import java.util.Arrays;
  * <ul>
  * <li>the near part, the samples pushed since the last hand-over, with their upper hull as in {@link HorizonHulls};
  * <li>the far part, the older samples still in reach, with the upper hull of every one of its suffixes: built by
- * adding the far part's samples from the nearest to the farthest, each added by a bisection that overwrites one slot
- * and remembers what it held, so dropping the farthest sample undoes its addition in O(1).
+ * adding the far part's samples from the nearest to the farthest, each addition overwriting one slot and remembering what
+ * it held, so dropping the farthest sample undoes its addition in O(1).
  * </ul>
  * When the far part is empty and the near part's farthest sample falls out of reach, the near part is handed over
- * to the far part. Every sample is added to each part once: O(log n) a sample, and a query searches two hulls. The
+ * to the far part. Every sample is added to each part once, in O(1) amortised, and a query searches two hulls, each
+ * from its last tangent point. The
  * result is the steepest slope over exactly the samples in reach, whichever part holds them, so it does not depend
  * on where a walk started (a window with a halo of at least the radius sees what the whole grid sees).
  */
@@ -62,6 +63,7 @@ final class WindowedHulls implements LineHorizons {
         private double[] hx = new double[16];
         private double[] hz = new double[16];
         private int hn;
+        private int nearHint;
         // far part: samples fx, fz [head, fn) in reach, farthest first; the hull of fx[head ...] is the stack
         // sx, sz [0, top], its farthest vertex at top; adding sample k wrote one slot, whose old value and the old top
         // are kept in savedX, savedZ, savedTop [k]
@@ -72,6 +74,7 @@ final class WindowedHulls implements LineHorizons {
         private double[] sx = new double[16];
         private double[] sz = new double[16];
         private int top = -1;
+        private int farHint;
         private int[] savedTop = new int[16];
         private double[] savedX = new double[16];
         private double[] savedZ = new double[16];
@@ -127,6 +130,7 @@ final class WindowedHulls implements LineHorizons {
             nz = tz;
             n = 0;
             hn = 0;
+            nearHint = 0;
             if (sx.length < fn) {
                 sx = new double[fx.length];
                 sz = new double[fx.length];
@@ -143,21 +147,17 @@ final class WindowedHulls implements LineHorizons {
         /**
          * Adds far sample k, farther than every vertex of the stack, at its far end: the vertices from the farthest
          * on up to the first one that stays a vertex (the first whose line to its nearer neighbour passes strictly
-         * above the new point) leave the hull; found by bisection, and the slot the new point takes remembered.
+         * above the new point) leave the hull; the slot the new point takes is remembered.
          */
         private void add(int k) {
             double px = fx[k];
             double pz = fz[k];
             // vertices in far-to-near order: v(t) = stack slot top − t, t = 0 … top; the last one always stays
+            // a hand-over adds its samples one after the other with no undo in between, so walking from the far end
+            // pops each vertex at most once over the hand-over: O(1) a sample, as for the near hull
             int lo = 0;
-            int hi = top;
-            while (lo < hi) {
-                int mid = (lo + hi) >>> 1;
-                if (staysAfter(top - mid, px, pz)) {
-                    hi = mid;
-                } else {
-                    lo = mid + 1;
-                }
+            while (lo < top && !staysAfter(top - lo, px, pz)) {
+                lo++;
             }
             int slot = top - lo + 1;                  // top − lo is the first vertex kept (−1 + 1 = 0 when empty)
             // the slot may hold a vertex of an earlier stack (one popped by a later addition that is not undone
@@ -188,42 +188,130 @@ final class WindowedHulls implements LineHorizons {
             top = savedTop[k];
         }
 
+        /** The steepest slope to the near part's hull (searched from its last tangent, as {@link HorizonHulls}). */
         double nearSlope(double px, double pz) {
-            if (hn == 0) {
+            int n = hn;
+            if (n == 0) {
                 return 0;
             }
-            int lo = 0;
-            int hi = hn - 1;
+            int last = n - 1;
+            int g = Math.min(nearHint, last);
+            int lo;
+            int hi;
+            if (g == last || nearAtOrBefore(g, px, pz)) {
+                hi = g;
+                int s = 1;
+                while (true) {
+                    int k = hi - s;
+                    if (k < 0) {
+                        lo = 0;
+                        break;
+                    }
+                    if (!nearAtOrBefore(k, px, pz)) {
+                        lo = k + 1;
+                        break;
+                    }
+                    hi = k;
+                    s <<= 1;
+                }
+            } else {
+                lo = g + 1;
+                int s = 1;
+                while (true) {
+                    int k = lo + s - 1;
+                    if (k >= last) {
+                        hi = last;
+                        break;
+                    }
+                    if (nearAtOrBefore(k, px, pz)) {
+                        hi = k;
+                        break;
+                    }
+                    lo = k + 1;
+                    s <<= 1;
+                }
+            }
             while (lo < hi) {
                 int mid = (lo + hi) >>> 1;
-                if ((hx[mid + 1] - hx[mid]) * (pz - hz[mid]) - (hz[mid + 1] - hz[mid]) * (px - hx[mid]) >= 0) {
+                if (nearAtOrBefore(mid, px, pz)) {
                     hi = mid;
                 } else {
                     lo = mid + 1;
                 }
             }
+            nearHint = lo;
             return (hz[lo] - pz) / (px - hx[lo]);
         }
 
+        /** True when (px, pz) lies on or above the line through near vertices k and k + 1. */
+        private boolean nearAtOrBefore(int k, double px, double pz) {
+            return (hx[k + 1] - hx[k]) * (pz - hz[k]) - (hz[k + 1] - hz[k]) * (px - hx[k]) >= 0;
+        }
+
+        /**
+         * The steepest slope to the far part's hull: its vertices far to near are the slots top, top − 1, … 0; the
+         * tangent is the first whose edge to the next passes on or below (px, pz), searched from the slot of the
+         * last tangent (slots below the top do not move when the far end is dropped).
+         */
         double farSlope(double px, double pz) {
-            if (top < 0) {
+            int t0 = top;
+            if (t0 < 0) {
                 return 0;
             }
-            // vertices far to near: slot top − t; the tangent is the first t whose edge to t + 1 passes on or below
-            int lo = 0;
-            int hi = top;
+            // in t = top − slot order the predicate runs false … false true … true, true at t = top (slot 0)
+            int g = Math.max(0, t0 - Math.min(farHint, t0));
+            int lo;
+            int hi;
+            if (g == t0 || farAtOrBefore(t0 - g, px, pz)) {
+                hi = g;
+                int s = 1;
+                while (true) {
+                    int k = hi - s;
+                    if (k < 0) {
+                        lo = 0;
+                        break;
+                    }
+                    if (!farAtOrBefore(t0 - k, px, pz)) {
+                        lo = k + 1;
+                        break;
+                    }
+                    hi = k;
+                    s <<= 1;
+                }
+            } else {
+                lo = g + 1;
+                int s = 1;
+                while (true) {
+                    int k = lo + s - 1;
+                    if (k >= t0) {
+                        hi = t0;
+                        break;
+                    }
+                    if (farAtOrBefore(t0 - k, px, pz)) {
+                        hi = k;
+                        break;
+                    }
+                    lo = k + 1;
+                    s <<= 1;
+                }
+            }
             while (lo < hi) {
                 int mid = (lo + hi) >>> 1;
-                int a = top - mid;
-                int b = a - 1;
-                if ((sx[b] - sx[a]) * (pz - sz[a]) - (sz[b] - sz[a]) * (px - sx[a]) >= 0) {
+                if (farAtOrBefore(t0 - mid, px, pz)) {
                     hi = mid;
                 } else {
                     lo = mid + 1;
                 }
             }
-            int s = top - lo;
-            return (sz[s] - pz) / (px - sx[s]);
+            int slot = t0 - lo;
+            farHint = slot;
+            return (sz[slot] - pz) / (px - sx[slot]);
+        }
+
+        /** True when (px, pz) lies on or above the line through stack slot a (≥ 1) and its nearer neighbour a − 1. */
+        private boolean farAtOrBefore(int a, double px, double pz) {
+            int b = a - 1;
+            return (sx[b] - sx[a]) * (pz - sz[a]) - (sz[b] - sz[a]) * (px - sx[a]) >= 0;
         }
     }
 }
