@@ -252,6 +252,20 @@ final class Converters {
         }
     }
 
+    /** {@code --sky-radius}: a finite positive number of metres ({@link io.github.jdem846.shadow.SkyViewOptions}). */
+    static final class SkyRadius implements ITypeConverter<Double> {
+        @Override
+        public Double convert(String text) {
+            return checkedDouble(text, r -> {
+                if (!(r < Double.POSITIVE_INFINITY)) {
+                    throw new IllegalArgumentException("the sky-view search radius must be a finite number of metres"
+                            + " above 0 (leave the option out to search the whole grid), got " + text.trim());
+                }
+                Scene.defaults().withSkyRadius(r);
+            });
+        }
+    }
+
     /** {@code --light-model}: {@link io.github.jdem846.render.LightModel}. */
     static final class LightModelName implements ITypeConverter<io.github.jdem846.render.LightModel> {
         @Override

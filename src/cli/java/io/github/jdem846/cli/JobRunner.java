@@ -28,6 +28,7 @@ final class JobRunner {
     private final ExecutionOptions execution;
     private final VerboseOption verbose;
     private List<Overlay> overlays = List.of();
+    private boolean values;
 
     JobRunner(CommandSpec spec, InputOptions input, OutputOptions output, ExecutionOptions execution,
               VerboseOption verbose) {
@@ -44,6 +45,15 @@ final class JobRunner {
      */
     JobRunner withOverlays(List<Overlay> value) {
         overlays = List.copyOf(value);
+        return this;
+    }
+
+    /**
+     * @param value true to write the product's values as float32 ({@link ReliefJob#runAndWriteValues})
+     * @return this runner
+     */
+    JobRunner withValues(boolean value) {
+        values = value;
         return this;
     }
 
@@ -67,7 +77,9 @@ final class JobRunner {
         KernelWarmUp warmUp = KernelWarmUp.start(dem -> warmUpJob.run(dem, JobListener.NONE), input.input());
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet, output.progress, err)) {
             ConsoleJobListener listener = new ConsoleJobListener(progress, err, times, sunTime, warmUp::stop);
-            if (overlays.isEmpty()) {
+            if (values) {
+                job.runAndWriteValues(output.path(), options, listener);
+            } else if (overlays.isEmpty()) {
                 job.runAndWrite(output.path(), options, listener);
             } else {
                 new OverlaidJob(job, overlays).runAndWrite(output.path(), options, listener);

@@ -6,6 +6,7 @@ import io.github.jdem846.render.LightModel;
 import io.github.jdem846.render.Scene;
 import io.github.jdem846.shade.HillshadeMethod;
 import io.github.jdem846.shadow.ShadowAlgorithm;
+import io.github.jdem846.shadow.SkyViewOptions;
 import java.io.IOException;
 import java.io.PrintWriter;
 import picocli.CommandLine.Mixin;
@@ -74,6 +75,12 @@ public final class SceneOptions {
             description = "Azimuths of the sky-view factor's horizons, 4 to 360. Default: ${DEFAULT-VALUE}.")
     int skyDirections;
 
+    @Option(names = "--sky-radius", paramLabel = "METRES", converter = Converters.SkyRadius.class,
+            description = "Search the sky-view factor's horizons within this many metres of each cell (terrain "
+                    + "farther away does not count), as WhiteboxTools' and RVT's maximum search distance. "
+                    + "Default: the whole grid.")
+    Double skyRadius;
+
     /** Says on {@code err} when a shadow option given has no effect with the shadows chosen. */
     void noteUnused(PrintWriter err) {
         shadowOptions.noteUnused(algorithm, err);
@@ -95,6 +102,8 @@ public final class SceneOptions {
                 .withShadows(algorithm).withShadowOptions(shadowOptions.options())
                 .withShadowIntensity(shadowIntensity).withLightModel(lightModel)
                 .withAmbient(ambient != null ? ambient : lightModel == LightModel.SKY ? LightModel.SKY_AMBIENT : 0)
-                .withSkyDirections(skyDirections).withBlend(new Blend(blend, hillshadeOpacity));
+                .withSkyDirections(skyDirections)
+                .withSkyRadius(skyRadius != null ? skyRadius : SkyViewOptions.UNBOUNDED)
+                .withBlend(new Blend(blend, hillshadeOpacity));
     }
 }

@@ -354,6 +354,75 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         }, result -> result.write(file, options, listener), listener);
     }
 
+    /**
+     * Runs a {@link Product#SKY_VIEW} job and writes the factor itself, 0..1, as a float32 GeoTIFF with no-data NaN
+     * (declared), georeferenced as the gray product. The grid and the values are held in memory at once (no tiles:
+     * the memory budget does not apply), as {@link #run(JobListener)} holds them.
+     *
+     * @param file     the GeoTIFF (.tif, .tiff)
+     * @param options  how to write it; its no-data value is replaced by NaN
+     * @param listener told of progress, notices and the end of each phase
+     * @return the files written
+     * @throws IllegalArgumentException  for another product or another format than GeoTIFF
+     * @throws IOException               when the input cannot be read or the output cannot be written
+     * @throws InsufficientHeapException when the grid and the values cannot fit in the heap
+     * @throws InterruptedException      when the calling thread is interrupted
+     */
+    public WriteResult runAndWriteValues(Path file, WriteOptions options, JobListener listener)
+            throws IOException, InterruptedException {
+        Objects.requireNonNull(file, "file");
+        Objects.requireNonNull(options, "options");
+        Objects.requireNonNull(listener, "listener");
+        if (product != Product.SKY_VIEW) {
+            throw new IllegalArgumentException("only the sky-view factor is written as float32 values, not the "
+                    + stageName() + " product");
+        }
+        if (!isGeoTiff(file)) {
+            throw new IllegalArgumentException("float32 values can only be written as GeoTIFF (.tif, .tiff), not '"
+                    + file + "'");
+        }
+        requireDrawable();
+        checkOutput(file, options);
+        Scene s = productScene();
+        DemInput in = requireInput();
+        WriteResult written;
+        try {
+            Planned planned = plan(in, s, listener);
+            PicturePlan plan = planned.plan();
+            InsufficientHeapException.requireFits(plan.gridCells(), plan.width(), plan.height(),
+                    JobMemory.of(product, s).perPixel(), Runtime.getRuntime().maxMemory());
+            DemLoader.Loaded loaded = DemLoader.load(in, plan, false, planned.statistics(), listener);
+            listener.phaseDone("read");
+            for (String notice : loaded.info().notices()) {
+                listener.notice(notice);
+            }
+            CellWindow area = loaded.area();
+            float[] factor = new io.github.jdem846.render.Renderer(execution).skyView(loaded.dem(), s, area,
+                    listener);
+            listener.phaseDone(stageName());
+            GridGeometry geometry = loaded.dem().geometry().window(area.col(), area.row(), area.width(),
+                    area.height());
+            written = ImageOutput.writeFloat(file, factor, area.width(), area.height(), GeoReference.of(geometry),
+                    options.withNoData(Double.NaN));
+        } catch (IOException e) {
+            throw Interrupts.interruptedOr(e);
+        }
+        written.notices().forEach(listener::notice);
+        listener.phaseDone("write");
+        return written;
+    }
+
+    /**
+     * {@return true when {@code file} is named as a GeoTIFF (.tif, .tiff, any case)}
+     *
+     * @param file the output file
+     */
+    public static boolean isGeoTiff(Path file) {
+        Path name = file.getFileName();
+        String n = name == null ? "" : name.toString().toLowerCase(Locale.ROOT);
+        return n.endsWith(".tif") || n.endsWith(".tiff");
+    }
+
     /** Opens the image a picture of {@code picture}'s size and place is written to. */
     @FunctionalInterface
     interface SinkOpener {
@@ -426,11 +495,11 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         if (s.hasShadows()) {
             halo = halo.union(shadowHalo(s));
         }
-        if (s.hasAmbient() || product == Product.SKY_VIEW) {
-            halo = halo.union(DemLoader.Halo.uniform(SkyView.HALO_CELLS));
-        }
         DemInfo read = DemReader.inspect(files).withDefaultEllipsoid(body.ellipsoid());
         DemInfo info = read.withGeometry(mercatorScale.apply(read.geometry()));
+        if (s.hasAmbient() || product == Product.SKY_VIEW) {
+            halo = halo.union(DemLoader.Halo.uniform(SkyView.haloCells(info.geometry(), s.skyViewOptions())));
+        }
         DemLoader.StreamedStatistics statistics = new DemLoader.StreamedStatistics(files, listener);
         return new Planned(DemLoader.plan(info, body.ellipsoid(), window, size, halo, statistics), statistics);
     }

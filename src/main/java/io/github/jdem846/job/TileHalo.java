@@ -33,7 +33,8 @@ final class TileHalo {
             java.util.Arrays.fill(h, 1);
         }
         if (scene.hasAmbient()) {
-            java.util.Arrays.fill(h, Math.max(h[0], io.github.jdem846.shadow.SkyView.HALO_CELLS));
+            java.util.Arrays.fill(h, Math.max(h[0], io.github.jdem846.shadow.SkyView.haloCells(plan.gridGeometry(),
+                    scene.skyViewOptions())));
         }
         if (!scene.hasShadows() || statistics == null || statistics.isEmpty()) {
             return h;

@@ -31,6 +31,8 @@ import java.util.Objects;
  * @param ambient          the weight W of the light of the sky, 0 to 1; above 0 the sky-view factor of every cell
  *                         is computed ({@link SkyView}), at 0 it is not
  * @param skyDirections    the number of azimuths of the sky-view factor ({@link SkyViewOptions#directions()})
+ * @param skyRadius        the sky-view factor's search radius in ground metres ({@link SkyViewOptions#radius()});
+ *                         {@link SkyViewOptions#UNBOUNDED} for none
  * @param blend            how the shading is laid on the tint ({@link Blend}; the original's: eq. 8, opaque)
  * @param drape            colours laid over the tint before the light (a draped image, {@link
  *                         io.github.jdem846.drape.Drape}), or {@code null} for the tint alone
@@ -38,7 +40,7 @@ import java.util.Objects;
 public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions hillshadeOptions,
                     ShadowAlgorithm shadows, ShadowOptions shadowOptions, LightField light,
                     double shadowIntensity, double fade, ElevationStatistics tintRange, LightModel lightModel,
-                    double ambient, int skyDirections, Blend blend, ColorLayer drape) {
+                    double ambient, int skyDirections, double skyRadius, Blend blend, ColorLayer drape) {
 
     /**
      * Checks that the options and light are given and that the weights are in range.
@@ -57,6 +59,8 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @param ambient the weight W of the light of the sky, 0 to 1; above 0 the sky-view factor of every cell is
      *     computed ({@link SkyView}), at 0 it is not
      * @param skyDirections the number of azimuths of the sky-view factor ({@link SkyViewOptions#directions()})
+     * @param skyRadius the sky-view factor's search radius in ground metres ({@link SkyViewOptions#radius()});
+     *     {@link SkyViewOptions#UNBOUNDED} for none
      * @param blend how the shading is laid on the tint ({@link Blend}; the original's: eq. 8, opaque)
      * @param drape colours laid over the tint before the light (a draped image), or {@code null} for the tint alone
      */
@@ -75,7 +79,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
         if (!(ambient >= 0 && ambient <= 1)) {
             throw new IllegalArgumentException("ambient (sky light) weight must be between 0 and 1, got " + ambient);
         }
-        new SkyViewOptions(skyDirections, 1);                 // validates the number of directions
+        new SkyViewOptions(skyDirections, 1, skyRadius);      // validates the number of directions and the radius
         Objects.requireNonNull(blend, "blend");
     }
 
@@ -92,7 +96,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
         return new Scene(ColorRamp.defaultRamp(), HillshadeMethod.JDEM846, HillshadeOptions.DEFAULTS,
                 ShadowAlgorithm.NONE, ShadowOptions.DEFAULTS, LightField.uniform(LightDirection.ORIGINAL_DEFAULT),
                 Compositor.DEFAULT_SHADOW_INTENSITY, 0, null, LightModel.JDEM846, 0, SkyViewOptions.DEFAULT_DIRECTIONS,
-                Blend.DEFAULT, null);
+                SkyViewOptions.UNBOUNDED, Blend.DEFAULT, null);
     }
 
     /**
@@ -102,7 +106,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withTint(ColorRamp ramp) {
-        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
+        return new Scene(ramp, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -112,7 +116,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withHillshade(HillshadeMethod method) {
-        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
+        return new Scene(tint, method, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -122,7 +126,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withHillshadeOptions(HillshadeOptions options) {
-        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
+        return new Scene(tint, hillshade, options, shadows, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -132,7 +136,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadows(ShadowAlgorithm algorithm) {
-        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
+        return new Scene(tint, hillshade, hillshadeOptions, algorithm, shadowOptions, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -142,7 +146,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadowOptions(ShadowOptions options) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, options, light, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -162,7 +166,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withLight(LightField field) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, field, shadowIntensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -172,7 +176,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      * @return the new scene
      */
     public Scene withShadowIntensity(double intensity) {
-        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange, lightModel, ambient, skyDirections, blend, drape);
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, intensity, fade, tintRange, lightModel, ambient, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -183,7 +187,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withFade(double darkening) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity,
-                darkening, tintRange, lightModel, ambient, skyDirections, blend, drape);
+                darkening, tintRange, lightModel, ambient, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -194,7 +198,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withTintRange(ElevationStatistics range) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                range, lightModel, ambient, skyDirections, blend, drape);
+                range, lightModel, ambient, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -205,7 +209,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withLightModel(LightModel model) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, model, ambient, skyDirections, blend, drape);
+                tintRange, model, ambient, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -216,7 +220,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withAmbient(double weight) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, weight, skyDirections, blend, drape);
+                tintRange, lightModel, weight, skyDirections, skyRadius, blend, drape);
     }
 
     /**
@@ -227,7 +231,18 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withSkyDirections(int directions) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, ambient, directions, blend, drape);
+                tintRange, lightModel, ambient, directions, skyRadius, blend, drape);
+    }
+
+    /**
+     * The same scene with another search radius of the sky-view factor.
+     *
+     * @param metres the radius in ground metres, positive; {@link SkyViewOptions#UNBOUNDED} for none
+     * @return the new scene
+     */
+    public Scene withSkyRadius(double metres) {
+        return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
+                tintRange, lightModel, ambient, skyDirections, metres, blend, drape);
     }
 
     /**
@@ -238,7 +253,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withBlend(Blend b) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, ambient, skyDirections, b, drape);
+                tintRange, lightModel, ambient, skyDirections, skyRadius, b, drape);
     }
 
     /**
@@ -250,7 +265,7 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
      */
     public Scene withDrape(ColorLayer layer) {
         return new Scene(tint, hillshade, hillshadeOptions, shadows, shadowOptions, light, shadowIntensity, fade,
-                tintRange, lightModel, ambient, skyDirections, blend, layer);
+                tintRange, lightModel, ambient, skyDirections, skyRadius, blend, layer);
     }
 
     /** {@return true when the sky-view factor is to be computed (an ambient weight above 0)} */
@@ -259,13 +274,13 @@ public record Scene(ColorRamp tint, HillshadeMethod hillshade, HillshadeOptions 
     }
 
     /**
-     * The settings of the sky-view stage: the scene's directions, heights exaggerated by the z-factor as the
+     * The settings of the sky-view stage: the scene's directions and search radius, heights exaggerated by the z-factor as the
      * hillshade shows them.
      *
      * @return the sky-view options
      */
     public SkyViewOptions skyViewOptions() {
-        return new SkyViewOptions(skyDirections, hillshadeOptions.zFactor());
+        return new SkyViewOptions(skyDirections, hillshadeOptions.zFactor(), skyRadius);
     }
 
     /**

@@ -22,16 +22,19 @@ final class HorizonSweep {
 
     private final SweepGrid g;
     private final double heightScale;
+    private final double radius;
 
     /**
      * @param dem         the terrain
      * @param azimuth     the direction looked in, degrees clockwise from north
      * @param heightScale factor applied to heights (the z-factor)
+     * @param radius      the search radius in ground metres ({@link SkyViewOptions#radius()})
      */
-    HorizonSweep(Dem dem, double azimuth, double heightScale) {
+    HorizonSweep(Dem dem, double azimuth, double heightScale, double radius) {
         RayFrame frame = new RayFrame(dem, new LightDirection(azimuth, 45), ShadowOptions.DEFAULTS);
         this.g = new SweepGrid(dem, frame, true, false, Double.NaN);
         this.heightScale = heightScale;
+        this.radius = radius;
     }
 
     /**
@@ -62,9 +65,13 @@ final class HorizonSweep {
 
     private void walk(LockstepBlock block) {
         int lines = block.lines;
-        HorizonHulls hulls = new HorizonHulls(lines);
+        LineHorizons hulls = radius < SkyViewOptions.UNBOUNDED ? new WindowedHulls(lines, radius)
+                : new HorizonHulls(lines);
         LatLonLines at = new LatLonLines(g, block.kFrom, lines, block.iStart);
-        double[] pos = at.pos;
+        // on a grid with one step length P is anchored at the file's grid, −(i + i0)·step, so that a window (whose
+        // lines start lower) measures every distance with the same numbers as the whole grid
+        boolean anchored = g.uniform();
+        double[] pos = anchored ? new double[lines] : at.pos;
         int[] top = at.top;
         double[] zs = block.z;
         float[] v = g.v;
@@ -76,7 +83,11 @@ final class HorizonSweep {
         double[] steps = g.f.metresPerStep;
         int cellHi = g.cellHi;
         for (int i = block.iStart; i >= block.iEnd; i--) {
-            at.moveTo(i);
+            if (anchored) {
+                java.util.Arrays.fill(pos, -(double) (i + g.i0) * g.uniformStep);
+            } else {
+                at.moveTo(i);
+            }
             block.sample(i);
             if (block.cells(i)) {
                 int off = block.off;
@@ -136,7 +147,8 @@ final class HorizonSweep {
         double z11 = upCell < 0 ? z01 : across ? v[upCell + sj] : z10;
         double b = (z10 - z0) + m * (z01 - z0);
         double c = m * (z0 - z10 - z01 + z11);
-        double s = (c > 0 ? b + c : b) / metres;
+        // Math.max, not a branch: the sign of c is as good as random on rough terrain
+        double s = (b + Math.max(c, 0)) / metres;
         return s == s ? s : Double.NEGATIVE_INFINITY;
     }
 }

@@ -1,6 +1,7 @@
 package io.github.jdem846.shadow;
 
 import io.github.jdem846.raster.Dem;
+import io.github.jdem846.raster.GridGeometry;
 import java.util.Objects;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ForkJoinPool;
@@ -16,7 +17,9 @@ import java.util.concurrent.ForkJoinPool;
  * O(cells) sweep ({@link HorizonSweep}): lines parallel to it, one cell apart, each carrying the upper convex hull of
  * its terrain; distances in ground metres per row, so lat/lon grids are measured right at every latitude. The
  * horizon angle is measured on the bilinear surface along the lines and interpolated between the two lines around
- * a cell; on the axes and diagonals it is exact. No-data cells get NaN; no-data terrain is skipped.
+ * a cell; on the axes and diagonals it is exact. No-data cells get NaN; no-data terrain is skipped. With a search
+ * radius ({@link SkyViewOptions#radius()}) only terrain within it counts ({@link WindowedHulls}), and a piece of the
+ * grid read with {@link #haloCells} around it gives the whole grid's factors.
  *
  * <p>Work: D sweeps of the grid; azimuths one after another, each split into blocks of lines on the pool. The result
  * does not depend on the thread count. Interrupting the calling thread stops the work ({@link CancellationException}).
@@ -24,12 +27,34 @@ import java.util.concurrent.ForkJoinPool;
 public final class SkyView {
 
     /**
-     * Cells of terrain read around a window or a tile for its sky-view factor: a grid read in pieces sees horizons
-     * this far beyond each piece (the whole grid is seen when it is read whole).
+     * Cells of terrain read around a window or a tile for its sky-view factor without a search radius: a grid read
+     * in pieces sees horizons this far beyond each piece (the whole grid is seen when it is read whole).
      */
     public static final int HALO_CELLS = 128;
 
     private SkyView() {
+    }
+
+    /**
+     * The cells of terrain to read around a window or a tile of {@code grid} for its sky-view factor: {@link
+     * #HALO_CELLS} without a search radius; with one, the radius in cells of the grid's smallest ground size and 2
+     * more (a bilinear sample's second cell and the cell's first step), so that the piece's factor equals that of
+     * the whole grid, whose horizons then lie within the halo.
+     *
+     * @param grid    the grid the piece is cut from (its rows give the cells' ground sizes)
+     * @param options the directions, height scale and search radius
+     * @return the halo in cells, at least 2
+     */
+    public static int haloCells(GridGeometry grid, SkyViewOptions options) {
+        if (!options.bounded()) {
+            return HALO_CELLS;
+        }
+        double smallest = Double.POSITIVE_INFINITY;
+        for (int r = 0; r < grid.height(); r++) {
+            smallest = Math.min(smallest, Math.min(grid.cellWidthMeters(r), grid.cellHeightMeters(r)));
+        }
+        double cells = Math.floor(options.radius() / smallest) + 2;
+        return (int) Math.min(Integer.MAX_VALUE / 4, Math.max(2, cells));
     }
 
     /**
@@ -64,7 +89,8 @@ public final class SkyView {
         float[] sum = new float[area.width() * area.height()];
         int d = options.directions();
         for (int k = 0; k < d; k++) {
-            new HorizonSweep(dem, options.azimuth(k), options.heightScale()).addSines(area, sum, pool);
+            new HorizonSweep(dem, options.azimuth(k), options.heightScale(), options.radius()).addSines(area, sum,
+                    pool);
         }
         float[] v = dem.backingArray();
         int w = dem.width();

@@ -38,6 +38,8 @@ final class SweepGrid {
     /** Flat index of frame cell (i, 0), and the index stride of one minor step. */
     final int[] baseI;
     final int strideJ;
+    /** Where major index 0 lies in the frame of the grid this one was cut from: root major index = i + i0. */
+    final long i0;
     /** Metres of one major step when it is the same on every row (projected grids), else NaN. */
     final double uniformStep;
     /** Per row: a line whose shadow height is below this counts as no terrain (see {@link SunSweep}). */
@@ -117,6 +119,7 @@ final class SweepGrid {
         GridGeometry.Placement at = dem.geometry().placement();
         long i0 = frame.xMajor ? (ci > 0 ? at.col() : (long) at.rootWidth() - w - at.col())
                 : (ri > 0 ? at.row() : (long) at.rootHeight() - h - at.row());
+        this.i0 = i0;
         // the root's last minor cell in this grid's frame: j = (cell − start) · direction, the larger of the ends
         int rootFirst = frame.xMajor ? -at.row() : -at.col();
         int rootLast = frame.xMajor ? at.rootHeight() - 1 - at.row() : at.rootWidth() - 1 - at.col();

@@ -57,8 +57,7 @@ final class TileRasterizer {
 
     /** {@link #need(WebMercatorTile)} of any block {@code core} of global pixels. */
     CellWindow need(CellWindow core) {
-        int base = scene.hasAmbient() ? io.github.jdem846.shadow.SkyView.HALO_CELLS
-                : scene.hillshade() != null ? 1 : 0;
+        int base = scene.hasAmbient() ? skyHalo(core) : scene.hillshade() != null ? 1 : 0;
         CellWindow need = grow(core, base);
         if (!scene.hasShadows() || range.isEmpty()) {
             return need;
@@ -90,6 +89,28 @@ final class TileRasterizer {
                         + MAX_HALO + " pixels of terrain toward the sun around each tile: use a lower --zoom or a "
                         + "higher sun");
             }
+        }
+    }
+
+    /**
+     * The sky-view halo of {@code core} ({@link io.github.jdem846.shadow.SkyView#haloCells}): with a search radius,
+     * measured in the smallest pixels (on the ground) of the rows it covers, grown until they cover the halo itself.
+     */
+    private int skyHalo(CellWindow core) {
+        io.github.jdem846.shadow.SkyViewOptions o = scene.skyViewOptions();
+        if (!o.bounded()) {
+            return io.github.jdem846.shadow.SkyView.HALO_CELLS;
+        }
+        long side = zoom.side();
+        int h = 0;
+        while (true) {
+            int r0 = (int) Math.max(0, (long) core.row() - h);
+            int r1 = (int) Math.min(side, (long) core.rowEnd() + h);
+            int next = io.github.jdem846.shadow.SkyView.haloCells(zoom.window(core.col(), r0, 1, r1 - r0), o);
+            if (next <= h || h >= MAX_HALO) {
+                return Math.min(h, MAX_HALO);
+            }
+            h = next;
         }
     }
 

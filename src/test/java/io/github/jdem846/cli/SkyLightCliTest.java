@@ -94,9 +94,41 @@ class SkyLightCliTest {
     }
 
     @Test
+    void skyviewWritesTheFactorAsFloat32WithinASearchRadius() throws IOException {
+        Path out = dir.resolve("svf.tif");
+        CliRun run = CliRun.of("skyview", LUX, "-o", out.toString(), "--directions", "16", "--float",
+                "--sky-radius", "9000");
+        assertEquals(0, run.exitCode(), run.err());
+        Dem dem = DemReader.read(Path.of(LUX));
+        float[] f = SkyView.compute(dem, SkyViewOptions.DEFAULTS.withDirections(16).withRadius(9000),
+                ForkJoinPool.commonPool());
+        float[] unbounded = SkyView.compute(dem, SkyViewOptions.DEFAULTS.withDirections(16),
+                ForkJoinPool.commonPool());
+        Dem written = DemReader.read(out);
+        assertEquals(dem.geometry().originX(), written.geometry().originX(), 0);
+        assertEquals(dem.geometry().originY(), written.geometry().originY(), 0);
+        assertEquals(dem.geometry().cellWidth(), written.geometry().cellWidth(), 0);
+        assertEquals(dem.geometry().crs().epsg(), written.geometry().crs().epsg());
+        float[] v = written.backingArray();
+        int differs = 0;
+        for (int i = 0; i < f.length; i++) {
+            assertEquals(Float.isNaN(f[i]), Float.isNaN(v[i]), "no-data at " + i);
+            if (!Float.isNaN(f[i])) {
+                assertEquals(f[i], v[i], 0f, "cell " + i);
+                assertTrue(v[i] >= unbounded[i], "a radius never hides sky, cell " + i);
+                differs += v[i] > unbounded[i] ? 1 : 0;
+            }
+        }
+        assertTrue(differs > 0, "9 km (about 15 cells) is shorter than some horizons");
+    }
+
+    @Test
     void badSkyOptionsAreRefusedInOneLine() {
         String[][] bad = {{"render", VOLCANO, "--ambient", "1.5"}, {"render", VOLCANO, "--sky-directions", "3"},
-            {"render", VOLCANO, "--light-model", "moon"}, {"skyview", VOLCANO, "--directions", "400"}};
+            {"render", VOLCANO, "--light-model", "moon"}, {"skyview", VOLCANO, "--directions", "400"},
+            {"render", VOLCANO, "--sky-radius", "0"}, {"skyview", VOLCANO, "--sky-radius", "-5"},
+            {"skyview", VOLCANO, "--sky-radius", "Infinity"}, {"skyview", VOLCANO, "--sky-radius", "far"},
+            {"skyview", VOLCANO, "--float", "--directions", "8"}};
         for (String[] args : bad) {
             String[] withOut = java.util.Arrays.copyOf(args, args.length + 2);
             withOut[args.length] = "-o";

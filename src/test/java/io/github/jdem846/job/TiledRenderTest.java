@@ -239,6 +239,20 @@ class TiledRenderTest {
     }
 
     @Test
+    void skyLightAndTheSkyViewFactorWithASearchRadiusRenderInTilesAsInMemory() throws Exception {
+        // the halo follows the radius (2 km: 68 cells of 30 m), so every tile sees every horizon the picture sees
+        Scene sky = sweep().withLightModel(io.github.jdem846.render.LightModel.SKY).withAmbient(0.35)
+                .withSkyDirections(16).withSkyRadius(2000);
+        ReliefJob tujunga = ReliefJob.of(TUJUNGA).withScene(sky).withSun(Sun.at(MORNING))
+                .withWindow(Window.cells(300, 100, 500, 360));
+        assertTiledEqualsInMemory("sky.png", tujunga, 1, forced(3, 2), 6);
+        assertTiledEqualsInMemory("sky-view.png", tujunga.withProduct(Product.SKY_VIEW), 1, forced(4, 3), 12);
+        // a lat/lon grid: the halo counts cells of the smallest ground size
+        assertTiledEqualsInMemory("sky-latlon.png", ReliefJob.of(JACKSBORO).withScene(sky.withSkyRadius(1500))
+                .withSun(Sun.fixed(135, 15)), 1, forced(3, 3), 9);
+    }
+
+    @Test
     void progressCountsThePicturesPixelsAcrossTiles() throws Exception {
         List<long[]> updates = new ArrayList<>();
         ReliefJob.of(JACKSBORO).withProduct(Product.HILLSHADE).withExecution(TWO_THREADS).withMemory(100_000)

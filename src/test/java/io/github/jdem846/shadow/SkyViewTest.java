@@ -193,6 +193,8 @@ class SkyViewTest {
         assertThrows(IllegalArgumentException.class, () -> SkyViewOptions.DEFAULTS.withDirections(3));
         assertThrows(IllegalArgumentException.class, () -> SkyViewOptions.DEFAULTS.withDirections(361));
         assertThrows(IllegalArgumentException.class, () -> SkyViewOptions.DEFAULTS.withHeightScale(0));
+        assertThrows(IllegalArgumentException.class, () -> SkyViewOptions.DEFAULTS.withRadius(0));
+        assertThrows(IllegalArgumentException.class, () -> SkyViewOptions.DEFAULTS.withRadius(Double.NaN));
     }
 
     private static Dem standalone(Dem crop) {
@@ -237,6 +239,104 @@ class SkyViewTest {
                         e[0], e[1]);
                 assertTrue(e[0] < 0.003, what);
                 assertTrue(e[1] < 0.04, what);
+            }
+        }
+    }
+
+    /** {mean |error|, max |error|} of the sweep with a search radius against the brute force with the same one. */
+    private static double[] errors(Dem dem, int directions, double radius) {
+        float[] s = SkyView.compute(dem, SkyViewOptions.DEFAULTS.withDirections(directions).withRadius(radius),
+                POOL.get(2));
+        HorizonReference ref = new HorizonReference(dem, 0.125, 1, radius);
+        double sum = 0;
+        double max = 0;
+        int n = 0;
+        for (int r = 0; r < dem.height(); r++) {
+            for (int c = 0; c < dem.width(); c++) {
+                double e = ref.skyView(c, r, directions);
+                if (Double.isNaN(e)) {
+                    continue;
+                }
+                double err = Math.abs(s[r * dem.width() + c] - e);
+                sum += err;
+                max = Math.max(max, err);
+                n++;
+            }
+        }
+        return new double[] {sum / n, max};
+    }
+
+    @Test
+    void aSearchRadiusAgreesWithTheBruteForceSearchWithinTheSameRadius() throws IOException {
+        Dem volcano = DemReader.read(Path.of("testdata/dem/maungawhau-volcano_10m_nztm-approx.tif"));
+        Dem tujunga = standalone(DemReader.read(Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.tif"))
+                .crop(500, 150, 90, 70));
+        Dem jacksboro = standalone(DemReader.read(Path.of("testdata/dem/jacksboro_srtm3s_wgs84.tif"))
+                .crop(150, 120, 80, 60));
+        // radii of a few cells to half the grid: the radius cuts most horizons short
+        double[][] radii = {{45, 150}, {100, 600}, {250, 900}};
+        Dem[] dems = {volcano, tujunga, jacksboro};
+        for (int k = 0; k < dems.length; k++) {
+            for (double radius : radii[k]) {
+                for (int d : new int[] {8, 16}) {
+                    double[] e = errors(dems[k], d, radius);
+                    String what = String.format(Locale.ROOT, "%s R=%.0f D=%d: mean %.5f max %.4f",
+                            dems[k].geometry().crs(), radius, d, e[0], e[1]);
+                    assertTrue(e[0] < 0.003, what);
+                    assertTrue(e[1] < 0.04, what);
+                }
+            }
+        }
+    }
+
+    @Test
+    void aLargerRadiusNeverSeesMoreSkyAndOneBeyondTheGridIsTheUnboundedFactor() {
+        Dem dem = SyntheticDems.rough(90, 70, 30, 5, 700);
+        SkyViewOptions o = SkyViewOptions.DEFAULTS.withDirections(16);
+        float[] previous = null;
+        for (double radius : new double[] {30, 95, 200, 600, 1500}) {
+            float[] s = SkyView.compute(dem, o.withRadius(radius), POOL.get(2));
+            if (previous != null) {
+                for (int i = 0; i < s.length; i++) {
+                    assertTrue(s[i] <= previous[i] + 1e-6f, "R = " + radius + ", cell " + i);
+                }
+            }
+            previous = s;
+        }
+        // the grid's diagonal is 3400 m: a radius beyond it sees every sample the unbounded sweep sees
+        assertArrayEquals(SkyView.compute(dem, o, POOL.get(2)), SkyView.compute(dem, o.withRadius(3500),
+                POOL.get(2)), 1e-6f);
+    }
+
+    @Test
+    void aPieceReadWithTheHaloOfTheRadiusEqualsTheWholeGrid() throws IOException {
+        Dem tujunga = DemReader.read(Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.tif")).crop(300, 100, 400, 300);
+        Dem jacksboro = DemReader.read(Path.of("testdata/dem/jacksboro_srtm3s_wgs84.tif"));
+        // 1200 m: 40 cells of 30 m, and 16.1 of Jacksboro's 3" (74.4 m east-west at its northern edge, 36.7° N)
+        int[] halos = {42, 18};
+        Dem[] dems = {tujunga, jacksboro};
+        for (int k = 0; k < dems.length; k++) {
+            Dem dem = dems[k];
+            SkyViewOptions o = SkyViewOptions.DEFAULTS.withDirections(24).withRadius(1200);
+            int halo = SkyView.haloCells(dem.geometry(), o);
+            assertEquals(halos[k], halo, "halo");
+            float[] whole = SkyView.compute(dem, o, POOL.get(2));
+            // pieces inside the grid and at its corners, cut with the halo (clipped by the grid)
+            for (CellWindow area : new CellWindow[] {new CellWindow(150, 120, 60, 50), new CellWindow(0, 0, 70, 40),
+                new CellWindow(dem.width() - 50, dem.height() - 45, 50, 45)}) {
+                int c0 = Math.max(0, area.col() - halo);
+                int r0 = Math.max(0, area.row() - halo);
+                int c1 = Math.min(dem.width(), area.colEnd() + halo);
+                int r1 = Math.min(dem.height(), area.rowEnd() + halo);
+                Dem piece = dem.crop(c0, r0, c1 - c0, r1 - r0);
+                CellWindow inside = new CellWindow(area.col() - c0, area.row() - r0, area.width(), area.height());
+                float[] part = SkyView.compute(piece, o, POOL.get(1), inside);
+                for (int r = 0; r < area.height(); r++) {
+                    for (int c = 0; c < area.width(); c++) {
+                        assertEquals(whole[(area.row() + r) * dem.width() + area.col() + c],
+                                part[r * area.width() + c], 0f, dem.geometry().crs() + " " + area + " " + c + "," + r);
+                    }
+                }
             }
         }
     }

@@ -20,6 +20,7 @@ public final class HorizonReference {
     private final double[] ch;
     private final double wRef;
     private final double hRef;
+    private final double maxDistance;
 
     /**
      * @param dem         the terrain
@@ -27,6 +28,17 @@ public final class HorizonReference {
      * @param heightScale factor on heights (z-factor)
      */
     public HorizonReference(Dem dem, double step, double heightScale) {
+        this(dem, step, heightScale, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * @param dem         the terrain
+     * @param step        the ray step in cells along the ray's major grid axis, e.g. 0.125
+     * @param heightScale factor on heights (z-factor)
+     * @param maxDistance the search radius in ground metres: samples farther along the ray do not count
+     */
+    public HorizonReference(Dem dem, double step, double heightScale, double maxDistance) {
+        this.maxDistance = maxDistance;
         this.dem = dem;
         this.v = dem.backingArray();
         this.w = dem.width();
@@ -69,6 +81,9 @@ public final class HorizonReference {
                 return best;
             }
             dist += Math.hypot(dx * cw[rowHere], dy * ch[rowHere]);
+            if (dist > maxDistance) {
+                return best;
+            }
             x = xn;
             y = yn;
             double z = bilinear(x, y);
