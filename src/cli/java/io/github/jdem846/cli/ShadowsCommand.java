@@ -47,6 +47,9 @@ public final class ShadowsCommand implements Callable<Integer> {
     @Mixin
     VerboseOption verbose;
 
+    @Mixin
+    ProjectionOptions projection;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -59,6 +62,10 @@ public final class ShadowsCommand implements Callable<Integer> {
         ReliefJob job = input.job(Product.SHADOWS).withScene(scene).withSun(sun.sun())
                 .withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
+        if (projection.given()) {
+            return new ProjectedJobRunner(spec, input, output, execution, verbose, projection).run(job, sun.time());
+        }
+        projection.requireConsistent(spec);
         return new JobRunner(spec, input, output, execution, verbose).run(job, sun.time());
     }
 }

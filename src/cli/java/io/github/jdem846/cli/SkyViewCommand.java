@@ -46,6 +46,9 @@ public final class SkyViewCommand implements Callable<Integer> {
     @Mixin
     VerboseOption verbose;
 
+    @Mixin
+    ProjectionOptions projection;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -63,6 +66,10 @@ public final class SkyViewCommand implements Callable<Integer> {
                 .withAmbient(1).withSkyDirections(directions);
         ReliefJob job = input.job(Product.SKY_VIEW).withScene(scene).withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
+        if (projection.given()) {
+            return new ProjectedJobRunner(spec, input, output, execution, verbose, projection).run(job, null);
+        }
+        projection.requireConsistent(spec);
         return new JobRunner(spec, input, output, execution, verbose).run(job, null);
     }
 }

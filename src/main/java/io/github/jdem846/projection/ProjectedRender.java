@@ -94,9 +94,15 @@ public record ProjectedRender(MapProjection projection, int width, int height) {
         WriteResult written;
         if (footprint.fitsInMemory() && footprint.bytes() + projected <= job.memoryBudget()) {
             ReliefResult relief = job.run(listener);
-            written = rgba ? warp(relief, job.execution()).write(file, options)
-                    : warpGray(relief, job.execution()).write(file, options);
-            listener.phaseDone("project");
+            if (rgba) {
+                ProjectedPicture picture = warp(relief, job.execution());
+                listener.phaseDone("project");
+                written = picture.write(file, options);
+            } else {
+                ProjectedGray picture = warpGray(relief, job.execution());
+                listener.phaseDone("project");
+                written = picture.write(file, options);
+            }
         } else {
             written = inBands(job, footprint.picture(), extent, size, rgba, file, options, listener);
         }
