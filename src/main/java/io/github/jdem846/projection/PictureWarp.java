@@ -112,7 +112,7 @@ public final class PictureWarp {
     /**
      * Warps a picture read row window by row window into {@code sink}, band of output rows after band: for each
      * band the rows of the picture its pixels fall between are read, at most about half of {@code budget} bytes,
-     * and the band takes at most about a quarter. The pixels are those {@link #warp} or {@link #warpGray} give.
+     * and the band (its pixels and their points in the picture's CRS, 16 bytes each) at most about a quarter. The pixels are those {@link #warp} or {@link #warpGray} give.
      *
      * @param source     the picture (as many rows as {@code grid} has)
      * @param noData     a gray picture's no-data value, or null (ignored for RGBA)
@@ -145,7 +145,11 @@ public final class PictureWarp {
             Arrays.fill(lowest, Integer.MAX_VALUE);
             Arrays.fill(highest, Integer.MIN_VALUE);
             int top = first;
+            double[] points = new double[2 * width * (last - first)];
             rows.forEach(first, last, (row, col, sx, sy) -> {
+                int i = 2 * ((row - top) * width + col);
+                points[i] = sx;
+                points[i + 1] = sy;
                 int r = locator.topRow(sx, sy);
                 if (r != Integer.MIN_VALUE) {
                     lowest[row - top] = Math.min(lowest[row - top], r);
@@ -170,19 +174,35 @@ public final class PictureWarp {
                 Rgba sampler = new Rgba(windowRows == 0 ? new int[0] : source.rgbaRows(r0, (int) windowRows), grid,
                         windowRows == 0 ? 0 : r0);
                 int[] band = new int[n * width];
-                rows.forEach(first, last, (row, col, sx, sy) -> band[(row - top) * width + col] =
-                        sampler.sample(sx, sy), execution);
+                inTasks(n, i -> band[i] = sampler.sample(points[2 * i], points[2 * i + 1]), width, execution);
                 sink.appendRgba(band, n);
             } else {
                 Gray sampler = new Gray(windowRows == 0 ? new byte[0] : source.grayRows(r0, (int) windowRows),
                         noData, grid, windowRows == 0 ? 0 : r0);
                 byte[] band = new byte[n * width];
-                rows.forEach(first, last, (row, col, sx, sy) -> band[(row - top) * width + col] =
-                        (byte) sampler.sample(sx, sy), execution);
+                inTasks(n, i -> band[i] = (byte) sampler.sample(points[2 * i], points[2 * i + 1]), width,
+                        execution);
                 sink.appendGray(band, n);
             }
             first = last;
         }
+    }
+
+    /** Runs {@code pixel} for each index of {@code rows × width} pixels, in tasks of rows on the threads. */
+    private static void inTasks(int rows, java.util.function.IntConsumer pixel, int width, RenderSettings execution)
+            throws InterruptedException {
+        List<Callable<Void>> tasks = new ArrayList<>();
+        for (int r0 = 0; r0 < rows; r0 += ROWS_PER_TASK) {
+            int from = r0 * width;
+            int to = Math.min(rows, r0 + ROWS_PER_TASK) * width;
+            tasks.add(() -> {
+                for (int i = from; i < to; i++) {
+                    pixel.accept(i);
+                }
+                return null;
+            });
+        }
+        run(tasks, execution);
     }
 
     private static void checkSizes(long pixels, GridGeometry source, int width, int height) {

@@ -75,12 +75,13 @@ class ProjectionOptionsTest {
         assertEquals(0, small.exitCode(), small.err());
         assertTrue(small.err().contains("warping it in bands"), small.err());
         assertEquals(-1, Files.mismatch(hillshade, banded), "the same file in bands");
-        for (String command : new String[] {"shadows", "skyview"}) {
+        for (String command : new String[] {"shadows", "skyview", "tint"}) {
             Path out = dir.resolve(command + ".png");
             CliRun r = CliRun.of(command, LUXEMBOURG, "--projection", "mollweide", "-o", out.toString(), "--width",
                     "100", "-q", "--threads=2");
             assertEquals(0, r.exitCode(), command + ": " + r.err());
-            assertEquals(1, ImageIO.read(out.toFile()).getRaster().getNumBands(), command);
+            assertEquals(command.equals("tint") ? 4 : 1, ImageIO.read(out.toFile()).getRaster().getNumBands(),
+                    command);
         }
     }
 
