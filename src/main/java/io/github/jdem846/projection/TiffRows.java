@@ -13,7 +13,7 @@ import javax.imageio.stream.ImageInputStream;
 
 /**
  * Rows of a TIFF picture written by jdem846 (8-bit RGBA or gray, in strips), read a window of rows at a time with
- * the JDK's TIFF reader, which decodes only the strips the window touches.
+ * the JDK's TIFF reader ({@code javax.imageio}), which decodes only the strips the window touches.
  */
 final class TiffRows implements PictureWarp.RowReader, AutoCloseable {
 
@@ -38,15 +38,21 @@ final class TiffRows implements PictureWarp.RowReader, AutoCloseable {
      * @throws IOException when the file cannot be opened as a TIFF
      */
     static TiffRows open(Path file, boolean rgba) throws IOException {
+        ImageReader reader = null;
+        for (Iterator<ImageReader> readers = ImageIO.getImageReadersByFormatName("tiff"); readers.hasNext(); ) {
+            ImageReader r = readers.next();
+            // the JDK's own reader: others on the class path may refuse a highly compressed strip (a flat area)
+            if (reader == null || r.getClass().getName().startsWith("com.sun.imageio.")) {
+                reader = r;
+            }
+        }
         ImageInputStream stream = ImageIO.createImageInputStream(file.toFile());
-        Iterator<ImageReader> readers = ImageIO.getImageReadersByFormatName("tiff");
-        if (stream == null || !readers.hasNext()) {
+        if (stream == null || reader == null) {
             if (stream != null) {
                 stream.close();
             }
             throw new IOException("no TIFF reader for " + file);
         }
-        ImageReader reader = readers.next();
         reader.setInput(stream, true, true);
         return new TiffRows(stream, reader, rgba);
     }
@@ -59,7 +65,12 @@ final class TiffRows implements PictureWarp.RowReader, AutoCloseable {
     private BufferedImage read(int first, int count) throws IOException {
         ImageReadParam param = reader.getDefaultReadParam();
         param.setSourceRegion(new Rectangle(0, first, width, count));
-        return reader.read(0, param);
+        try {
+            return reader.read(0, param);
+        } catch (IOException | RuntimeException e) {
+            throw new IOException("the temporary rendered picture cannot be read back (rows " + first + " to "
+                    + (first + count - 1) + "): " + e.getMessage(), e);
+        }
     }
 
     @Override

@@ -159,6 +159,29 @@ class ProjectedBandsTest {
         }
     }
 
+    /** A flat DEM's picture compresses a thousandfold: the temporary file must still be read back. */
+    @Test
+    void aFlatDemInBands(@TempDir Path dir) throws Exception {
+        int cols = 1800;
+        int rows = 900;
+        java.nio.ByteBuffer cells = java.nio.ByteBuffer.allocate(4 * cols * rows)
+                .order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        while (cells.hasRemaining()) {
+            cells.putFloat(100f);
+        }
+        Files.write(dir.resolve("flat.flt"), cells.array());
+        Files.writeString(dir.resolve("flat.hdr"), "ncols " + cols + "\nnrows " + rows + "\nxllcorner -180\n"
+                + "yllcorner -90\ncellsize 0.2\nNODATA_value -9999\nbyteorder LSBFIRST\n");
+        Files.copy(Path.of("testdata/dem/jacksboro_srtm3s_wgs84.prj"), dir.resolve("flat.prj"));
+        ReliefJob job = ReliefJob.of(dir.resolve("flat.flt"));
+        ProjectedRender render = new ProjectedRender(MapProjection.named(ProjectionName.WINKEL_TRIPEL, 0), 800, 0);
+        Path whole = dir.resolve("whole.tif");
+        Path bands = dir.resolve("bands.tif");
+        render.runAndWrite(job, whole, WriteOptions.defaults(), JobListener.NONE);
+        render.runAndWrite(job.withMemory(2_000_000), bands, WriteOptions.defaults(), JobListener.NONE);
+        assertEquals(-1, Files.mismatch(whole, bands));
+    }
+
     @Test
     void aBudgetTooSmallForOneRowIsRefused() {
         GridGeometry grid = world();
