@@ -51,7 +51,8 @@ public record ProjectedRender(MapProjection projection, int width, int height) {
     }
 
     /**
-     * Renders {@code job} (an RGBA product: relief or tint) and warps it.
+     * Renders {@code job} (an RGBA product: relief or tint; a gray one with {@link #runAndWrite} or {@link
+     * #warpGray}) and warps it.
      *
      * @param job      the relief job, at the resolution the picture is to be shaded at
      * @param listener told of progress, notices and phases ("project" for the warp)
@@ -99,7 +100,7 @@ public record ProjectedRender(MapProjection projection, int width, int height) {
                 listener.phaseDone("project");
                 written = picture.write(file, options);
             } else {
-                ProjectedGray picture = warpGray(relief, job.execution());
+                ProjectedGray picture = warpGray(relief, grayNoData(job.product(), options), job.execution());
                 listener.phaseDone("project");
                 written = picture.write(file, options);
             }
@@ -189,13 +190,17 @@ public record ProjectedRender(MapProjection projection, int width, int height) {
      * @throws InterruptedException     when the calling thread is interrupted
      */
     public ProjectedGray warpGray(ReliefResult gray, RenderSettings execution) throws InterruptedException {
+        return warpGray(gray, grayNoData(gray.job().product(), WriteOptions.defaults()), execution);
+    }
+
+    private ProjectedGray warpGray(ReliefResult gray, Integer noData, RenderSettings execution)
+            throws InterruptedException {
         if (gray.gray() == null) {
             throw new IllegalArgumentException("an RGBA picture is warped with warp(), not warpGray()");
         }
         GridGeometry grid = gray.geometry();
         ProjectedExtent extent = ProjectedExtent.of(grid, projection);
         int[] size = size(extent, gray.width());
-        Integer noData = grayNoData(gray.job().product(), WriteOptions.defaults());
         byte[] out = PictureWarp.warpGray(gray.gray(), noData, grid, projection, extent, size[0], size[1], execution);
         return new ProjectedGray(projection, extent, size[0], size[1], out, noData);
     }
@@ -211,8 +216,8 @@ public record ProjectedRender(MapProjection projection, int width, int height) {
      */
     public ProjectedPicture warp(ReliefResult relief, RenderSettings execution) throws InterruptedException {
         if (relief.argb() == null) {
-            throw new IllegalArgumentException("only RGBA pictures (relief, tint) can be projected, not a gray "
-                    + relief.job().product().name().toLowerCase(java.util.Locale.ROOT));
+            throw new IllegalArgumentException("a gray " + relief.job().product().name().toLowerCase(Locale.ROOT)
+                    + " is warped with warpGray(), not warp()");
         }
         GridGeometry grid = relief.geometry();
         ProjectedExtent extent = ProjectedExtent.of(grid, projection);
