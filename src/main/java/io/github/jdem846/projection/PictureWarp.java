@@ -134,7 +134,7 @@ public final class PictureWarp {
         checkSizes((long) grid.width() * grid.height(), grid, width, height);
         Rows rows = new Rows(GridMapping.of(grid, projection), extent, width, height);
         int pixelBytes = source.rgba() ? 4 : 1;
-        GridPoint locator = new GridPoint(grid, 0, grid.height());
+        GridPoint locator = new GridPoint(grid, 0);
         long maxWindowRows = Math.max(1, budget / 2 / ((long) grid.width() * pixelBytes));
         int bandRows = (int) Math.max(1, Math.min(height, budget / 4 / ((long) width * (pixelBytes + 16))));
         int first = 0;
@@ -307,8 +307,8 @@ public final class PictureWarp {
 
     /**
      * A point of the grid's CRS as the four pixels around it: columns c0, c1 and rows r0, r1 (clamped at the
-     * edges, wrapped around a 360° longitude/latitude grid) and the weights fx, fy; the pixels held are the rows
-     * [firstRow, firstRow + rows) of the picture.
+     * edges, wrapped around a 360° longitude/latitude grid) and their weights; the pixels held are the picture's
+     * rows from {@code firstRow} on.
      */
     private static class GridPoint {
         final int w;
@@ -320,7 +320,7 @@ public final class PictureWarp {
         private final double cellHeight;
         private final boolean wraps;
 
-        GridPoint(GridGeometry g, int firstRow, int rows) {
+        GridPoint(GridGeometry g, int firstRow) {
             this.w = g.width();
             this.h = g.height();
             this.firstRow = firstRow;
@@ -383,7 +383,7 @@ public final class PictureWarp {
         private final int[] argb;
 
         Rgba(int[] argb, GridGeometry g, int firstRow) {
-            super(g, firstRow, argb.length / g.width());
+            super(g, firstRow);
             this.argb = argb;
         }
 
@@ -421,7 +421,7 @@ public final class PictureWarp {
         private final boolean hasNoData;
 
         Gray(byte[] gray, Integer noData, GridGeometry g, int firstRow) {
-            super(g, firstRow, gray.length / g.width());
+            super(g, firstRow);
             this.gray = gray;
             this.hasNoData = noData != null;
             this.noData = noData != null ? noData : 0;
