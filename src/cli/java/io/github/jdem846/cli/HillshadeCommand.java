@@ -71,6 +71,9 @@ public final class HillshadeCommand implements Callable<Integer> {
     @Mixin
     GrayOverlayRefusal overlay;
 
+    @Mixin
+    ProjectionOptions projection;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -90,6 +93,10 @@ public final class HillshadeCommand implements Callable<Integer> {
         ReliefJob job = input.job(Product.HILLSHADE).withScene(scene).withSun(sun.sun())
                 .withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
+        if (projection.given()) {
+            return new ProjectedJobRunner(spec, input, output, execution, verbose, projection).run(job, sun.time());
+        }
+        projection.requireConsistent(spec);
         return new JobRunner(spec, input, output, execution, verbose).run(job, sun.time());
     }
 

@@ -20,8 +20,9 @@ import java.util.Optional;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * Runs {@code render --projection}: the relief on the DEM's grid (one pixel per cell, or fewer for a DEM much
- * larger than the picture: twice the projected picture's width), then warped into the projection and written.
+ * Runs {@code render}, {@code hillshade}, {@code shadows} or {@code skyview} with {@code --projection}: the
+ * product on the DEM's grid (one pixel per cell, or fewer for a DEM much larger than the picture: twice the
+ * projected picture's width), then warped into the projection and written.
  */
 final class ProjectedJobRunner {
 

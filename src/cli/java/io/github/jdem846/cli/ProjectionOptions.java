@@ -26,8 +26,8 @@ final class ProjectionOptions {
             description = "Draw the picture in a map projection: a name (" + "equirectangular, mercator, "
                     + "transverse-mercator, robinson, mollweide, winkel-tripel, hammer, aitoff, wagner-vi), an EPSG "
                     + "code Apache SIS knows offline (e.g. EPSG:3395, EPSG:326xx), or a file holding the WKT of a "
-                    + "projected CRS. Shading is done on the DEM's grid first; --width/--height size the projected "
-                    + "picture.")
+                    + "projected CRS. Shading is done on the DEM's grid first, then warped (bilinear; a gray product's "
+                    + "no-data left out); --width/--height size the projected picture.")
     String projection;
 
     @Option(names = "--central-meridian", paramLabel = "DEGREES",

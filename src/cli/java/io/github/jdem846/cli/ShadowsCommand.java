@@ -50,6 +50,9 @@ public final class ShadowsCommand implements Callable<Integer> {
     @Mixin
     GrayOverlayRefusal overlay;
 
+    @Mixin
+    ProjectionOptions projection;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -62,6 +65,10 @@ public final class ShadowsCommand implements Callable<Integer> {
         ReliefJob job = input.job(Product.SHADOWS).withScene(scene).withSun(sun.sun())
                 .withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
+        if (projection.given()) {
+            return new ProjectedJobRunner(spec, input, output, execution, verbose, projection).run(job, sun.time());
+        }
+        projection.requireConsistent(spec);
         return new JobRunner(spec, input, output, execution, verbose).run(job, sun.time());
     }
 }

@@ -61,6 +61,9 @@ public final class SkyViewCommand implements Callable<Integer> {
     @Mixin
     GrayOverlayRefusal overlay;
 
+    @Mixin
+    ProjectionOptions projection;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -83,6 +86,15 @@ public final class SkyViewCommand implements Callable<Integer> {
                 .withSkyRadius(radius != null ? radius : SkyViewOptions.UNBOUNDED);
         ReliefJob job = input.job(Product.SKY_VIEW).withScene(scene).withMercatorScale(mapScale.scale())
                 .withExecution(execution.settings());
+        if (projection.given()) {
+            if (floatValues) {
+                throw new CommandLine.ParameterException(spec.commandLine(), "Invalid value for option "
+                        + "'--projection': --float values are written on the DEM's own grid only; leave out --float to "
+                        + "project the 8-bit factor");
+            }
+            return new ProjectedJobRunner(spec, input, output, execution, verbose, projection).run(job, null);
+        }
+        projection.requireConsistent(spec);
         return new JobRunner(spec, input, output, execution, verbose).withValues(floatValues).run(job, null);
     }
 }

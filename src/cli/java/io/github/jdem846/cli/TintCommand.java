@@ -40,6 +40,9 @@ public final class TintCommand implements Callable<Integer> {
     @Mixin
     VerboseOption verbose;
 
+    @Mixin
+    ProjectionOptions projection;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -54,6 +57,10 @@ public final class TintCommand implements Callable<Integer> {
         input.requireConsistent();
         ReliefJob job = input.job(Product.TINT).withScene(Scene.defaults().withTint(tint.ramp()))
                 .withExecution(execution.settings());
+        if (projection.given()) {
+            return new ProjectedJobRunner(spec, input, output, execution, verbose, projection).run(job, null);
+        }
+        projection.requireConsistent(spec);
         return new JobRunner(spec, input, output, execution, verbose).run(job, null);
     }
 }

@@ -423,6 +423,36 @@ public record ReliefJob(DemInput input, Product product, Scene scene, Window win
         return n.endsWith(".tif") || n.endsWith(".tiff");
     }
 
+    /**
+     * Where and how large the picture {@link #run} or {@link #runAndWrite} would make, from the file's header (and,
+     * for cast shadows, its statistics), without rendering.
+     *
+     * @param picture      the grid of the picture's pixels, as {@link ReliefResult#geometry()} gives it
+     * @param bytes        the heap the picture takes rendered at once (its grid, layers and pixels)
+     * @param fitsInMemory whether that fits the {@linkplain #memoryBudget() memory budget} and one Java array: if not,
+     *                     {@link #runAndWrite} renders it in tiles
+     */
+    public record Footprint(GridGeometry picture, long bytes, boolean fitsInMemory) {
+    }
+
+    /**
+     * Plans the picture without rendering it ({@link Footprint}).
+     *
+     * @return its grid and memory
+     * @throws IOException          when the DEM cannot be read
+     * @throws InterruptedException when the calling thread is interrupted
+     */
+    public Footprint footprint() throws IOException, InterruptedException {
+        requireDrawable();
+        Scene s = productScene();
+        try {
+            PicturePlan plan = plan(requireInput(), s, JobListener.NONE).plan();
+            return new Footprint(plan.pictureGeometry(), inMemoryBytes(plan, s), fitsInMemory(plan, s));
+        } catch (IOException e) {
+            throw Interrupts.interruptedOr(e);
+        }
+    }
+
     /** Opens the image a picture of {@code picture}'s size and place is written to. */
     @FunctionalInterface
     interface SinkOpener {

@@ -29,7 +29,7 @@ public record Aitoff() implements SphericalFormula {
             return;
         }
         double halfX = x / 2;
-        double rho = Math.min(Math.PI / 2, Math.hypot(halfX, y));
+        double rho = Math.min(Math.PI / 2, Math.sqrt(halfX * halfX + y * y)); // bounded: no need of hypot
         if (rho < 1e-15) {
             lambdaPhi[0] = 0;
             lambdaPhi[1] = 0;
@@ -39,7 +39,7 @@ public record Aitoff() implements SphericalFormula {
         double sinc = Math.sin(rho) / rho;
         double east = halfX * sinc;
         double cosRho = Math.cos(rho);
-        lambdaPhi[1] = Math.atan2(y * sinc, Math.hypot(east, cosRho));
+        lambdaPhi[1] = Math.atan2(y * sinc, Math.sqrt(east * east + cosRho * cosRho));
         lambdaPhi[0] = 2 * Math.atan2(east, cosRho);
     }
 

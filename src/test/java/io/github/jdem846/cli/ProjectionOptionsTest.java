@@ -15,6 +15,7 @@ import org.junit.jupiter.api.io.TempDir;
 class ProjectionOptionsTest {
 
     private static final String LUXEMBOURG = "testdata/dem/luxembourg_srtm30s_wgs84.tif";
+    private static final String JACKSBORO = "testdata/dem/jacksboro_srtm3s_wgs84.tif";
     private static final String BIG_TUJUNGA = "testdata/dem/bigtujunga_srtm30m_utm11n.tif";
 
     @TempDir
@@ -48,6 +49,40 @@ class ProjectionOptionsTest {
         assertEquals(0, run.exitCode(), run.err());
         assertFalse(run.err().contains("without an EPSG code"), run.err());
         assertTrue(Files.size(out) > 1000);
+    }
+
+    /** The gray products in a projection: georeferenced, no-data 0 outside a hillshade, the same under --memory. */
+    @Test
+    void grayProductsAreProjectedToo() throws Exception {
+        Path hillshade = dir.resolve("hs.tif");
+        CliRun run = CliRun.of("hillshade", LUXEMBOURG, "--projection", "winkel-tripel", "-o", hillshade.toString(),
+                "--width", "150", "--world-file", "-q", "--threads=2");
+        assertEquals(0, run.exitCode(), run.err());
+        BufferedImage image = ImageIO.read(hillshade.toFile());
+        assertEquals(150, image.getWidth());
+        assertEquals(1, image.getRaster().getNumBands());
+        assertEquals(0, image.getRaster().getSample(0, 0, 0), "no-data outside the country");
+        int middle = image.getRaster().getSample(75, image.getHeight() / 2, 0);
+        assertTrue(middle > 0, "the middle is shaded: " + middle);
+        String prj = Files.readString(dir.resolve("hs.prj"));
+        assertTrue(prj.contains("PROJECTION[\"Winkel_Tripel\"]"), prj);
+        Path banded = dir.resolve("hs-banded.tif");
+        CliRun whole = CliRun.of("hillshade", JACKSBORO, "--projection", "winkel-tripel", "-o",
+                hillshade.toString(), "--width", "150", "--world-file", "-q", "--threads=2");
+        assertEquals(0, whole.exitCode(), whole.err());
+        CliRun small = CliRun.of("hillshade", JACKSBORO, "--projection", "winkel-tripel", "-o", banded.toString(),
+                "--width", "150", "--world-file", "--memory", "400k", "--threads=2");
+        assertEquals(0, small.exitCode(), small.err());
+        assertTrue(small.err().contains("warping it in bands"), small.err());
+        assertEquals(-1, Files.mismatch(hillshade, banded), "the same file in bands");
+        for (String command : new String[] {"shadows", "skyview", "tint"}) {
+            Path out = dir.resolve(command + ".png");
+            CliRun r = CliRun.of(command, LUXEMBOURG, "--projection", "mollweide", "-o", out.toString(), "--width",
+                    "100", "-q", "--threads=2");
+            assertEquals(0, r.exitCode(), command + ": " + r.err());
+            assertEquals(command.equals("tint") ? 4 : 1, ImageIO.read(out.toFile()).getRaster().getNumBands(),
+                    command);
+        }
     }
 
     @Test

@@ -141,4 +141,15 @@ class SkyLightCliTest {
             assertFalse(Files.exists(dir.resolve("x.png")));
         }
     }
+
+    @Test
+    void floatValuesAreNotProjected() {
+        Path out = dir.resolve("svf.tif");
+        CliRun run = CliRun.of("skyview", VOLCANO, "--float", "--directions", "8", "--projection", "mollweide",
+                "-o", out.toString());
+        assertEquals(2, run.exitCode(), run.err());
+        String first = run.err().lines().findFirst().orElse("");
+        assertTrue(first.contains("--projection") && first.contains("--float"), first);
+        assertFalse(Files.exists(out));
+    }
 }
