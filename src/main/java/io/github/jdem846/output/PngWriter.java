@@ -43,9 +43,10 @@ final class PngWriter implements BandEncoder {
     /** Target filtered bytes per deflate segment (whole rows, at least one). */
     static final int SEGMENT_BYTES = 1 << 20;
     /**
-     * A gray segment whose Huffman-only deflate is at least 1/this of its filtered bytes is kept so; one that
-     * compresses better (long runs: shadow masks, flat or no-data areas) is also deflated with string matching,
-     * and the smaller kept.
+     * A gray segment is deflated Huffman-only unless the entropy of its filtered bytes ({@link #entropyBits}) is
+     * below 1/this of their bits, i.e. Huffman coding alone would compress it below 1/this: few distinct values,
+     * mostly long runs (shadow masks, flat or no-data areas), which string matching compresses far better and
+     * fast.
      */
     static final int HUFFMAN_ONLY_RATIO = 4;
     /** Payload of every IDAT chunk but the last. */
@@ -210,12 +211,27 @@ final class PngWriter implements BandEncoder {
         if (level == 0 || bytesPerPixel != 1) {
             return segment(deflate(filtered, n, last, Deflater.DEFAULT_STRATEGY), adler, n, segment);
         }
-        Deflated huffman = deflate(filtered, n, last, Deflater.HUFFMAN_ONLY);
-        if ((long) huffman.length * HUFFMAN_ONLY_RATIO >= n) {
-            return segment(huffman, adler, n, segment);
+        int strategy = entropyBits(filtered, n) * HUFFMAN_ONLY_RATIO < 8.0 * n ? Deflater.DEFAULT_STRATEGY
+                : Deflater.HUFFMAN_ONLY;
+        return segment(deflate(filtered, n, last, strategy), adler, n, segment);
+    }
+
+    /**
+     * The order-0 entropy of the first {@code n} bytes of {@code data}, in bits: about the size of their Huffman
+     * coding. {@link StrictMath} so that the choice it makes, and so the file, is the same on every JVM.
+     */
+    static double entropyBits(byte[] data, int n) {
+        int[] counts = new int[256];
+        for (int i = 0; i < n; i++) {
+            counts[data[i] & 0xFF]++;
         }
-        Deflated matched = deflate(filtered, n, last, Deflater.DEFAULT_STRATEGY);
-        return segment(matched.length < huffman.length ? matched : huffman, adler, n, segment);
+        double bits = 0;
+        for (int c : counts) {
+            if (c > 0) {
+                bits += c * StrictMath.log((double) n / c);
+            }
+        }
+        return bits / StrictMath.log(2);
     }
 
     private static Segment segment(Deflated d, Adler32 adler, int n, RowChunks.Chunk segment) {

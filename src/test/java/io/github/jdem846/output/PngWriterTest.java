@@ -158,6 +158,24 @@ class PngWriterTest {
     }
 
     @Test
+    void entropyIsTheHuffmanBoundInBits() {
+        byte[] data = new byte[1024];
+        assertEquals(0, PngWriter.entropyBits(data, 1024), 1e-9, "one value: no information");
+        for (int i = 0; i < 1024; i++) {
+            data[i] = (byte) i;
+        }
+        assertEquals(8 * 1024, PngWriter.entropyBits(data, 1024), 1e-6, "all 256 values alike: 8 bits each");
+        assertEquals(8 * 256, PngWriter.entropyBits(data, 256), 1e-6, "only the first n bytes count");
+        assertEquals(4 * 2, PngWriter.entropyBits(data, 4), 1e-6, "4 distinct bytes: 2 bits each");
+        Arrays.fill(data, 0, 512, (byte) 7);
+        Arrays.fill(data, 512, 1024, (byte) -1);
+        assertEquals(1024, PngWriter.entropyBits(data, 1024), 1e-6, "two values, half each: 1 bit");
+        Arrays.fill(data, 0, 768, (byte) 7);                           // p = 3/4 and 1/4
+        double expected = 768 * Math.log(4.0 / 3) / Math.log(2) + 256 * 2;
+        assertEquals(expected, PngWriter.entropyBits(data, 1024), 1e-6);
+    }
+
+    @Test
     void grayRunsAreDeflatedWithStringMatching() throws Exception {
         byte[] mask = new byte[W * H];
         for (int r = 200; r < 700; r++) {
