@@ -59,18 +59,37 @@ final class InputWarmUp {
     /**
      * Reads the file's first rows a few times, so that the decoder's classes are loaded and its loops on their way
      * to compiled code before the command's own read (a cold 4000² Deflate read took 0.83 s, 0.62 s after one such
-     * read, 0.46 s after twenty; docs/performance.md). At most an eighth of the file, {@link
-     * #READ_WARM_UP_NANOS} of time and {@link #warmUpMemoryLimit()} of heap, on the core picocli's start-up leaves
-     * idle.
+     * read, 0.46 s after twenty; docs/performance.md). At most an eighth of the file per read, {@link
+     * #warmUpCells} cells (none for a small file) and {@link #READ_WARM_UP_NANOS} of time in all, and {@link
+     * #warmUpMemoryLimit()} of heap, on the core picocli's start-up leaves idle.
      */
     private static void warmUpReader(DemInfo info) throws IOException {
         Path dem = Path.of(info.source());
         ReadRequest firstRows = firstRows(info);
+        Window.Cells window = (Window.Cells) firstRows.window();
+        long perRead = (long) window.width() * window.height();
+        long budget = warmUpCells(info, perRead);
         long start = System.nanoTime();
-        do {
+        for (long cells = perRead; cells <= budget && System.nanoTime() - start < READ_WARM_UP_NANOS;
+                cells += perRead) {
             DemReader.read(dem, firstRows);
-        } while (System.nanoTime() - start < READ_WARM_UP_NANOS);
+        }
     }
+
+    /**
+     * Cells the reader warm-up may read in all, in reads of {@code perRead} cells: a quarter of the file's, and
+     * none when the file holds fewer than {@link #MIN_READS_IN_FILE} such reads. A small file is read by the
+     * command sooner than the warm-up could compile the decoder's loops, and reading its first rows again and again
+     * took a core from the command: Big Tujunga's hillshade (1197 × 643) took 0.47 s with 250 ms of such reads, 0.41
+     * s with two, 0.36 s with none (docs/performance.md, "Start-up").
+     */
+    static long warmUpCells(DemInfo info, long perRead) {
+        long cells = (long) info.width() * info.height();
+        return cells < MIN_READS_IN_FILE * perRead ? 0 : cells / 4;
+    }
+
+    /** The reader is warmed up only on files of at least this many first-rows reads. */
+    private static final long MIN_READS_IN_FILE = 16;
 
     /** What the warm-up reads: up to 512 × 256 cells at the top left, within {@link #warmUpMemoryLimit()}. */
     static ReadRequest firstRows(DemInfo info) {

@@ -26,6 +26,12 @@ import java.util.zip.Deflater;
  * zlib. Memory: the band, at most one segment of rows copied from a band that ends inside it, and one batch of
  * compressed segments. Measured against PngEncoder and ImageIO in docs/performance.md ("PNG encoding").
  *
+ * <p>Gray segments (hillshades, shadows) are deflated with Huffman coding only ({@link Deflater#HUFFMAN_ONLY}):
+ * continuous-tone rows hold few repeated strings after filtering, so string matching costs about 2.5 times the
+ * time for a larger result (a rough 4000² hillshade: 12.8 MB Huffman-only, 13.2 MB with matching at level 1); see
+ * {@link #HUFFMAN_ONLY_RATIO} for the exception. RGBA segments are deflated with string matching (repeated
+ * colours and alpha). Both are at the level asked for.
+ *
  * <p>A segment ends with a sync flush (the empty stored block that byte-aligns the stream) and the next starts
  * from a fresh deflate state, so segments concatenate into one valid stream (as pigz and PngEncoder do); the
  * stream's Adler-32 is combined from the segments'. IDAT chunks carry {@link #IDAT_BYTES} each. No colour profile
@@ -36,6 +42,13 @@ final class PngWriter implements BandEncoder {
 
     /** Target filtered bytes per deflate segment (whole rows, at least one). */
     static final int SEGMENT_BYTES = 1 << 20;
+    /**
+     * A gray segment is deflated Huffman-only unless the entropy of its filtered bytes ({@link #entropyBits}) is
+     * below 1/this of their bits, i.e. Huffman coding alone would compress it below 1/this: few distinct values,
+     * mostly long runs (shadow masks, flat or no-data areas), which string matching compresses far better and
+     * fast.
+     */
+    static final int HUFFMAN_ONLY_RATIO = 4;
     /** Payload of every IDAT chunk but the last. */
     static final int IDAT_BYTES = 1 << 18;
     /**
@@ -195,8 +208,48 @@ final class PngWriter implements BandEncoder {
         new RowFilter(segments.rowBytes(), bytesPerPixel).filter(segment, filtered);
         Adler32 adler = new Adler32();
         adler.update(filtered, 0, n);
+        if (level == 0 || bytesPerPixel != 1) {
+            return segment(deflate(filtered, n, last, Deflater.DEFAULT_STRATEGY), adler, n, segment);
+        }
+        int strategy = entropyBits(filtered, n) * HUFFMAN_ONLY_RATIO < 8.0 * n ? Deflater.DEFAULT_STRATEGY
+                : Deflater.HUFFMAN_ONLY;
+        return segment(deflate(filtered, n, last, strategy), adler, n, segment);
+    }
+
+    /**
+     * The order-0 entropy of the first {@code n} bytes of {@code data}, in bits: about the size of their Huffman
+     * coding. {@link StrictMath} so that the choice it makes, and so the file, is the same on every JVM.
+     */
+    static double entropyBits(byte[] data, int n) {
+        int[] counts = new int[256];
+        for (int i = 0; i < n; i++) {
+            counts[data[i] & 0xFF]++;
+        }
+        double bits = 0;
+        for (int c : counts) {
+            if (c > 0) {
+                bits += c * StrictMath.log((double) n / c);
+            }
+        }
+        return bits / StrictMath.log(2);
+    }
+
+    private static Segment segment(Deflated d, Adler32 adler, int n, RowChunks.Chunk segment) {
+        return new Segment(Arrays.copyOf(d.bytes, d.length), d.length, adler.getValue(), n, segment.rows());
+    }
+
+    /** Raw deflate data in the first {@code length} bytes of {@code bytes}. */
+    private record Deflated(byte[] bytes, int length) {
+    }
+
+    /**
+     * {@code n} filtered bytes deflated at this writer's level with {@code strategy}: ending in a sync flush, or
+     * the final block when {@code last}.
+     */
+    private Deflated deflate(byte[] filtered, int n, boolean last, int strategy) {
         Deflater deflater = new Deflater(level, true);
         try {
+            deflater.setStrategy(strategy);
             deflater.setInput(filtered, 0, n);
             if (last) {
                 deflater.finish();
@@ -207,14 +260,15 @@ final class PngWriter implements BandEncoder {
                 int room = deflated.length - length;
                 int k = deflater.deflate(deflated, length, room, last ? Deflater.NO_FLUSH : Deflater.SYNC_FLUSH);
                 length += k;
-                if (last ? deflater.finished() : k < room) {
+                // (the first call after setStrategy only sets it and may return 0 bytes with the input untouched)
+                if (last ? deflater.finished() : k < room && deflater.needsInput()) {
                     break;
                 }
                 if (length == deflated.length) {
                     deflated = Arrays.copyOf(deflated, deflated.length * 2);
                 }
             }
-            return new Segment(Arrays.copyOf(deflated, length), length, adler.getValue(), n, segment.rows());
+            return new Deflated(deflated, length);
         } finally {
             deflater.end();
         }
@@ -290,9 +344,7 @@ final class PngWriter implements BandEncoder {
         private final int bpp;
         private byte[] prev;
         private byte[] cur;
-        private final byte[] sub;
-        private final byte[] up;
-        private final byte[] avg;
+        /** The current row Paeth-filtered, which {@link #choose} keeps (the filter most rows of shading take). */
         private final byte[] paeth;
 
         /** @param sampleBytes bytes of a row's samples (without the filter-type byte) */
@@ -301,14 +353,7 @@ final class PngWriter implements BandEncoder {
             bpp = bytesPerPixel;
             prev = new byte[n];
             cur = new byte[n];
-            sub = new byte[n];
-            up = new byte[n];
-            avg = new byte[n];
             paeth = new byte[n];
-            sub[0] = 1;
-            up[0] = 2;
-            avg[0] = 3;
-            paeth[0] = 4;
         }
 
         /** Filters the rows of {@code segment} into {@code out}, one after another, after the row above it. */
@@ -317,67 +362,110 @@ final class PngWriter implements BandEncoder {
             int n = cur.length;
             for (int r = 0; r < segment.rows(); r++) {
                 segment.row(r, cur, 1);
-                System.arraycopy(choose(), 0, out, r * n, n);
+                apply(choose(), out, r * n);
                 byte[] t = prev;
                 prev = cur;
                 cur = t;
             }
         }
 
-        private byte[] choose() {
+        /**
+         * The filter type for the current row: the sums of the five filters' outputs are taken in one pass that
+         * keeps only the Paeth filter's, and only the chosen filter is then written ({@link #apply}).
+         */
+        private int choose() {
             byte[] c = cur;
             byte[] p = prev;
+            byte[] t = paeth;
             long sumNone = 0;
             long sumSub = 1;
             long sumUp = 2;
             long sumAvg = 3;
             long sumPaeth = 4;
             int n = c.length;
-            for (int i = 1; i < n; i++) {
+            int head = Math.min(n, 1 + bpp);
+            for (int i = 1; i < head; i++) {              // no pixel to the left: a = d = 0
                 int x = c[i] & 0xFF;
                 int b = p[i] & 0xFF;
-                int a = 0;
-                int d = 0;
-                if (i > bpp) {
-                    a = c[i - bpp] & 0xFF;
-                    d = p[i - bpp] & 0xFF;
-                }
-                byte s = (byte) (x - a);
-                byte u = (byte) (x - b);
-                byte v = (byte) (x - ((a + b) >> 1));
-                int q = a + b - d;
-                int pa = Math.abs(q - a);
-                int pb = Math.abs(q - b);
-                int pc = Math.abs(q - d);
-                byte t = (byte) (x - (pa <= pb && pa <= pc ? a : pb <= pc ? b : d));
-                sub[i] = s;
-                up[i] = u;
-                avg[i] = v;
-                paeth[i] = t;
                 sumNone += x;
-                sumSub += Math.abs(s);
-                sumUp += Math.abs(u);
-                sumAvg += Math.abs(v);
-                sumPaeth += Math.abs(t);
+                sumSub += Math.abs((byte) x);
+                sumUp += Math.abs((byte) (x - b));
+                sumAvg += Math.abs((byte) (x - (b >> 1)));
+                t[i] = (byte) (x - b);                      // Paeth of (0, b, 0) is b
+                sumPaeth += Math.abs(t[i]);
             }
-            byte[] best = c;
+            for (int i = head; i < n; i++) {
+                int x = c[i] & 0xFF;
+                int b = p[i] & 0xFF;
+                int a = c[i - bpp] & 0xFF;
+                int d = p[i - bpp] & 0xFF;
+                sumNone += x;
+                sumSub += Math.abs((byte) (x - a));
+                sumUp += Math.abs((byte) (x - b));
+                sumAvg += Math.abs((byte) (x - ((a + b) >> 1)));
+                byte e = (byte) (x - paeth(a, b, d));
+                t[i] = e;
+                sumPaeth += Math.abs(e);
+            }
+            int best = 0;
             long min = sumNone;
             if (min > sumSub) {
-                best = sub;
+                best = 1;
                 min = sumSub;
             }
             if (min > sumUp) {
-                best = up;
+                best = 2;
                 min = sumUp;
             }
             if (min > sumAvg) {
-                best = avg;
+                best = 3;
                 min = sumAvg;
             }
             if (min > sumPaeth) {
-                best = paeth;
+                best = 4;
             }
             return best;
+        }
+
+        /** Writes the current row filtered with {@code type} (its type byte first) to {@code out} at {@code off}. */
+        private void apply(int type, byte[] out, int off) {
+            byte[] c = cur;
+            byte[] p = prev;
+            int n = c.length;
+            out[off] = (byte) type;
+            int head = Math.min(n, 1 + bpp);
+            switch (type) {
+                case 0 -> System.arraycopy(c, 1, out, off + 1, n - 1);
+                case 1 -> {
+                    System.arraycopy(c, 1, out, off + 1, head - 1);
+                    for (int i = head; i < n; i++) {
+                        out[off + i] = (byte) (c[i] - c[i - bpp]);
+                    }
+                }
+                case 2 -> {
+                    for (int i = 1; i < n; i++) {
+                        out[off + i] = (byte) (c[i] - p[i]);
+                    }
+                }
+                case 3 -> {
+                    for (int i = 1; i < head; i++) {
+                        out[off + i] = (byte) (c[i] - ((p[i] & 0xFF) >> 1));
+                    }
+                    for (int i = head; i < n; i++) {
+                        out[off + i] = (byte) (c[i] - (((c[i - bpp] & 0xFF) + (p[i] & 0xFF)) >> 1));
+                    }
+                }
+                default -> System.arraycopy(paeth, 1, out, off + 1, n - 1);
+            }
+        }
+
+        /** The Paeth predictor (PNG spec 9.4) of left {@code a}, above {@code b}, upper left {@code d}. */
+        private static int paeth(int a, int b, int d) {
+            int q = a + b - d;
+            int pa = Math.abs(q - a);
+            int pb = Math.abs(q - b);
+            int pc = Math.abs(q - d);
+            return pa <= pb && pa <= pc ? a : pb <= pc ? b : d;
         }
     }
 }

@@ -45,6 +45,17 @@ class InputWarmUpTest {
     }
 
     @Test
+    void onlyALargeFileIsReadAheadAndAtMostAQuarterOfIt() throws IOException {
+        io.github.jdem846.io.DemInfo bt = io.github.jdem846.io.DemReader.inspect(Path.of(BT_FLT));
+        io.github.jdem846.io.Window.Cells first = (io.github.jdem846.io.Window.Cells) InputWarmUp.firstRows(bt)
+                .window();
+        long perRead = (long) first.width() * first.height();
+        assertEquals(0, InputWarmUp.warmUpCells(bt, perRead), "1197 × 643 is read by the command itself");
+        assertEquals(1197L * 643 / 4, InputWarmUp.warmUpCells(bt, 1197L * 643 / 16), "16 reads' worth of cells");
+        assertEquals(0, InputWarmUp.warmUpCells(bt, 1197L * 643 / 15));
+    }
+
+    @Test
     void noDemAmongTheArgumentsGivesNothing() {
         assertEquals(Optional.empty(), InputWarmUp.readFirstDem(new String[0]));
         assertEquals(Optional.empty(), InputWarmUp.readFirstDem(new String[] {"render", "-o", "x.png"}));

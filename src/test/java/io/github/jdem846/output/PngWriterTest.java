@@ -5,9 +5,18 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.pngencoder.PngEncoder;
+import io.github.jdem846.light.LightDirection;
+import io.github.jdem846.light.LightField;
+import io.github.jdem846.raster.Dem;
+import io.github.jdem846.render.RenderProgress;
+import io.github.jdem846.render.RenderSettings;
+import io.github.jdem846.render.Renderer;
+import io.github.jdem846.shade.HillshadeMethod;
+import io.github.jdem846.shade.HillshadeOptions;
 import io.github.jdem846.testing.PoolExtension;
 import io.github.jdem846.testing.SyntheticDems;
 import io.github.jdem846.testing.SyntheticDems.ShadedRelief;
+import io.github.jdem846.testing.TestDems;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -21,6 +30,7 @@ import java.util.Random;
 import java.util.concurrent.ForkJoinPool;
 import java.util.zip.Adler32;
 import java.util.zip.DataFormatException;
+import java.util.zip.Deflater;
 import java.util.zip.Inflater;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
@@ -119,6 +129,67 @@ class PngWriterTest {
             assertEquals(expected, ours.others, "IHDR and IEND as PngEncoder's, no iCCP (gray values are display"
                     + " values, as gdaldem writes them)");
             assertArrayEquals(inflate(theirs.idat), inflate(ours.idat), "the filtered rows");
+        }
+    }
+
+    @Test
+    void grayShadingIsDeflatedSmallerThanWithStringMatching() throws Exception {
+        Dem bt = TestDems.load(TestDems.BIG_TUJUNGA);
+        byte[] gray = new Renderer(new RenderSettings(2, 256)).hillshadeGray(bt, HillshadeMethod.HORN,
+                HillshadeOptions.DEFAULTS, LightField.uniform(new LightDirection(315, 45)), RenderProgress.NONE);
+        BufferedImage image = Rasters.grayImage(gray, bt.width(), bt.height());
+        byte[] png = encode(image, 1, true);
+        BufferedImage back = ImageIO.read(new java.io.ByteArrayInputStream(png));
+        assertArrayEquals(gray, ((java.awt.image.DataBufferByte) back.getRaster().getDataBuffer()).getData(),
+                "decodes to the samples");
+        byte[] idat = Chunks.of(png).idat;
+        byte[] rows = inflate(idat);
+        Deflater matching = new Deflater(1);
+        matching.setInput(rows);
+        matching.finish();
+        byte[] buffer = new byte[rows.length + 1024];
+        int matched = 0;
+        while (!matching.finished()) {
+            matched += matching.deflate(buffer, matched, buffer.length - matched);
+        }
+        matching.end();
+        // Huffman coding alone: 410 kB for Big Tujunga's hillshade, against 462 kB with level-1 string matching
+        assertTrue(idat.length < 0.95 * matched, idat.length + " bytes, string matching " + matched);
+    }
+
+    @Test
+    void entropyIsTheHuffmanBoundInBits() {
+        byte[] data = new byte[1024];
+        assertEquals(0, PngWriter.entropyBits(data, 1024), 1e-9, "one value: no information");
+        for (int i = 0; i < 1024; i++) {
+            data[i] = (byte) i;
+        }
+        assertEquals(8 * 1024, PngWriter.entropyBits(data, 1024), 1e-6, "all 256 values alike: 8 bits each");
+        assertEquals(8 * 256, PngWriter.entropyBits(data, 256), 1e-6, "only the first n bytes count");
+        assertEquals(4 * 2, PngWriter.entropyBits(data, 4), 1e-6, "4 distinct bytes: 2 bits each");
+        Arrays.fill(data, 0, 512, (byte) 7);
+        Arrays.fill(data, 512, 1024, (byte) -1);
+        assertEquals(1024, PngWriter.entropyBits(data, 1024), 1e-6, "two values, half each: 1 bit");
+        Arrays.fill(data, 0, 768, (byte) 7);                           // p = 3/4 and 1/4
+        double expected = 768 * Math.log(4.0 / 3) / Math.log(2) + 256 * 2;
+        assertEquals(expected, PngWriter.entropyBits(data, 1024), 1e-6);
+    }
+
+    @Test
+    void grayRunsAreDeflatedWithStringMatching() throws Exception {
+        byte[] mask = new byte[W * H];
+        for (int r = 200; r < 700; r++) {
+            Arrays.fill(mask, r * W + 300, r * W + 300 + r, (byte) 255);       // a shadow, lit elsewhere
+        }
+        for (boolean parallel : new boolean[] {false, true}) {
+            byte[] png = encode(Rasters.grayImage(mask, W, H), 1, parallel);
+            byte[] rows = inflate(Chunks.of(png).idat);
+            assertEquals(H * (W + 1), rows.length);
+            int idat = Chunks.of(png).idat.length;
+            // Huffman coding alone needs at least one bit per filtered byte: a quarter of that is string matching
+            assertTrue(idat * 8L * 4 < rows.length, idat + " bytes for " + rows.length + " filtered bytes");
+            BufferedImage back = ImageIO.read(new java.io.ByteArrayInputStream(png));
+            assertArrayEquals(mask, ((java.awt.image.DataBufferByte) back.getRaster().getDataBuffer()).getData());
         }
     }
 
