@@ -1,6 +1,7 @@
 package io.github.jdem846;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -66,6 +67,29 @@ class LauncherIT {
         assertTrue(next.out().lines().anyMatch(l -> l.endsWith(" io.github.jdem846.cli.Main source: shared objects"
                 + " file (top)")), next.out().lines().filter(l -> l.contains("cli.Main")).toList().toString());
         assertEquals(made, archives(cache), "the same archive, used");
+    }
+
+    @Test
+    void aNewArchiveDropsArchivesUnusedFor30Days(@TempDir Path cache) throws Exception {
+        Path dir = Files.createDirectories(cache.resolve("jdem846"));
+        Path stale = Files.write(dir.resolve("jdem846-21-111.jsa"), new byte[16]);
+        Path recent = Files.write(dir.resolve("jdem846-21-222.jsa"), new byte[16]);
+        long day = TimeUnit.DAYS.toMillis(1);
+        Files.setLastModifiedTime(stale, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis()
+                - 40 * day));
+        Files.setLastModifiedTime(recent, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis()
+                - 2 * day));
+
+        Run run = launch(cache, Map.of(), "info", "--json");
+        assertEquals(0, run.status(), run.out());
+        List<Path> left = archives(cache);
+        if (Runtime.version().feature() < 19) {
+            assertEquals(List.of(recent, stale).stream().sorted().toList(), left, "no archive work on JDK 17 and 18");
+            return;
+        }
+        assertFalse(left.contains(stale), "an archive 40 days old is deleted: " + left);
+        assertTrue(left.contains(recent), "one 2 days old stays: " + left);
+        assertEquals(2, left.size(), "and the new one is made: " + left);
     }
 
     private record Run(int status, String out) {
