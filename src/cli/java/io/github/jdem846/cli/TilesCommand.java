@@ -64,6 +64,9 @@ public final class TilesCommand implements Callable<Integer> {
     OverlayOptions overlays;
 
     @Mixin
+    DrapeOptions drape;
+
+    @Mixin
     SunOptions sun;
 
     @Mixin
@@ -96,8 +99,8 @@ public final class TilesCommand implements Callable<Integer> {
      *                                        that do not go together or do not apply to tiles ({@code --xy-scale},
      *                                        {@code --sun-per-tile}), an output that is neither a directory nor a
      *                                        {@code .pmtiles} name, an unknown ramp, a glob that matches no DEM
-     * @throws IOException                    when a colour file, an overlay file or a directory named cannot be
-     *                                        read, or the directory holds no DEM file
+     * @throws IOException                    when a colour file, an overlay file, a drape image or a directory
+     *                                        named cannot be read, or the directory holds no DEM file
      * @throws IllegalArgumentException       when {@code --tint} names a colour file that does not exist
      */
     public TileJob tileJob(PrintWriter err) throws IOException {
@@ -127,7 +130,7 @@ public final class TilesCommand implements Callable<Integer> {
         }
         Usage.check(spec, "--output", () -> TileFormat.of(output));
         overlays.requireValidStyles(spec);
-        Scene scene = sceneOptions.scene();
+        Scene scene = drape.apply(sceneOptions.scene());
         InputPaths.Resolved resolved = InputPaths.resolve(spec, inputs);
         for (String note : resolved.notes()) {
             err.println("jdem846: note: " + note);

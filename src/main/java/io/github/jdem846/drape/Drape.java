@@ -72,10 +72,44 @@ public record Drape(List<DrapeImage> images) implements ColorLayer {
 
     @Override
     public int[] argb(GridGeometry grid, CellWindow area) throws IOException {
+        return argb(grid, area, null);
+    }
+
+    /**
+     * {@inheritDoc} The images' sampling steps are measured at the centre of {@code picture} rather than of the
+     * root grid (for map tiles, whose root grid is the whole world at their zoom).
+     */
+    @Override
+    public ColorLayer forPicture(GridGeometry picture) {
+        Objects.requireNonNull(picture, "picture");
+        Drape drape = this;
+        return new ColorLayer() {
+            @Override
+            public int[] argb(GridGeometry grid, CellWindow area) throws IOException {
+                return drape.argb(grid, area, picture);
+            }
+
+            @Override
+            public void requireCovers(GridGeometry whole) {
+                drape.requireCovers(whole);
+            }
+
+            @Override
+            public ColorLayer forPicture(GridGeometry other) {
+                return drape.forPicture(other);
+            }
+        };
+    }
+
+    /** The colours of {@code area}, the steps measured at the centre of {@code picture}, or of the root if null. */
+    private int[] argb(GridGeometry grid, CellWindow area, GridGeometry picture) throws IOException {
         Objects.requireNonNull(grid, "grid");
         int[] out = new int[area.width() * area.height()];
         for (DrapeImage image : images) {
-            int[] layer = sample(image, toImage(image, grid.crs()), grid, area);
+            MathTransform mt = toImage(image, grid.crs());
+            int[] k = picture == null ? steps(image, mt, grid)
+                    : stepsAt(image, mt, picture, picture.width() / 2.0, picture.height() / 2.0);
+            int[] layer = sample(image, mt, grid, area, k);
             for (int i = 0; i < out.length; i++) {
                 out[i] = ColorLayer.over(layer[i], out[i]);
             }
@@ -213,7 +247,7 @@ public record Drape(List<DrapeImage> images) implements ColorLayer {
      * image at least 3 times finer than the grid is read every k-th pixel ({@link #steps}), k the
      * whole number of its pixels a cell spans, and each cell takes the pixel read nearest its centre.
      */
-    private static int[] sample(DrapeImage image, MathTransform mt, GridGeometry grid, CellWindow area)
+    private static int[] sample(DrapeImage image, MathTransform mt, GridGeometry grid, CellWindow area, int[] k)
             throws IOException {
         int w = area.width();
         int h = area.height();
@@ -227,7 +261,6 @@ public record Drape(List<DrapeImage> images) implements ColorLayer {
         }
         transform(mt, xy);
         GridGeometry g = image.grid();
-        int[] k = steps(image, mt, grid);
         int kx = k[0];
         int ky = k[1];
         int phaseX = kx / 2;
@@ -289,8 +322,11 @@ public record Drape(List<DrapeImage> images) implements ColorLayer {
      */
     static int[] steps(DrapeImage image, MathTransform mt, GridGeometry grid) {
         GridGeometry.Placement p = grid.placement();
-        double col = p.rootWidth() / 2.0 - p.col();
-        double row = p.rootHeight() / 2.0 - p.row();
+        return stepsAt(image, mt, grid, p.rootWidth() / 2.0 - p.col(), p.rootHeight() / 2.0 - p.row());
+    }
+
+    /** {@link #steps} measured at the fractional cell position ({@code col}, {@code row}) of {@code grid}. */
+    static int[] stepsAt(DrapeImage image, MathTransform mt, GridGeometry grid, double col, double row) {
         double[] xy = {grid.centerX(col), grid.centerY(row), grid.centerX(col + 1), grid.centerY(row),
             grid.centerX(col), grid.centerY(row + 1)};
         transform(mt, xy);

@@ -34,6 +34,19 @@ public interface ColorLayer {
     }
 
     /**
+     * The layer for the cells of {@code picture} when their grids are windows of a larger root grid ({@link
+     * GridGeometry#placement()}), as map tiles are windows of their zoom's whole world: whatever the layer decides
+     * once for a whole picture (a drape's sampling steps) is decided on {@code picture} instead of the root. Each
+     * cell's colour still depends only on where it lies. The default returns this layer.
+     *
+     * @param picture the part of the root grid that is drawn (its cells' positions as in the root grid)
+     * @return the layer to draw that picture with
+     */
+    default ColorLayer forPicture(GridGeometry picture) {
+        return this;
+    }
+
+    /**
      * {@code over} composited over {@code under} (Porter–Duff source over, non-premultiplied ARGB, each channel
      * rounded to the nearest 8-bit value).
      *

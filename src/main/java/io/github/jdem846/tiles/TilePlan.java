@@ -61,9 +61,9 @@ public final class TilePlan {
             ZoomGrid grid = new ZoomGrid(z);
             int own = ZoomSource.decimationFor(projection, grid);
             boolean small = Overview.isSmall(projection.grid().width(), projection.grid().height(), own);
-            ls.add(new Level(grid, TileRange.covering(projection.extent(), z),
-                    new ZoomSource(job.input(), projection, grid, small ? overview : null),
-                    new TileRasterizer(grid, scene, range, perTile), overlays(job, z)));
+            TileRange tiles = TileRange.covering(projection.extent(), z);
+            ls.add(new Level(grid, tiles, new ZoomSource(job.input(), projection, grid, small ? overview : null),
+                    new TileRasterizer(grid, draped(scene, grid, tiles), range, perTile), overlays(job, z)));
         }
         this.levels = List.copyOf(ls);
         // the deepest zoom first: its groups are the most and the largest
@@ -140,6 +140,24 @@ public final class TilePlan {
 
     private static DemInfo inspect(TileJob job) throws IOException {
         return DemReader.inspect(job.input()).withDefaultEllipsoid(Ellipsoid.WGS84);
+    }
+
+    /**
+     * The scene for one zoom: its drape, if any, placed on the zoom's tiles ({@link
+     * io.github.jdem846.render.ColorLayer#forPicture}: sampling steps measured at their centre, not at the world's)
+     * and checked to cover some of them.
+     *
+     * @throws IllegalArgumentException when the drape cannot be placed on the tiles (naming the image)
+     */
+    private static Scene draped(Scene scene, ZoomGrid grid, TileRange tiles) {
+        if (scene.drape() == null) {
+            return scene;
+        }
+        int s = WebMercatorTile.SIZE;
+        GridGeometry picture = grid.window(tiles.minX() * s, tiles.minY() * s, (tiles.maxX() - tiles.minX() + 1) * s,
+                (tiles.maxY() - tiles.minY() + 1) * s);
+        scene.drape().requireCovers(picture);
+        return scene.withDrape(scene.drape().forPicture(picture));
     }
 
     /**

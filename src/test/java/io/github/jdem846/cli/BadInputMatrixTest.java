@@ -242,6 +242,7 @@ class BadInputMatrixTest {
 
     static Stream<Arguments> drapeImages() {
         String render = "render IN/dem.tif -q -o OUT/relief.png --drape IN/";
+        String tiles = "tiles IN/dem.tif -q -Z 11 ";
         return Stream.of(
                 row(1, render + "drape/missing.tif", "missing.tif", "no such file"),
                 row(1, render + "drape", "drape", "is not a file"),
@@ -253,7 +254,13 @@ class BadInputMatrixTest {
                 row(1, render + "drape/badprj.png", "badprj.prj", "not a CRS in WKT"),
                 row(1, render + "drape/far.png", "far.png", "does not overlap the picture"),
                 row(1, "render IN/bt.flt -q -o OUT/relief.png --drape IN/drape/far.png", "far.png",
-                        "does not overlap"));
+                        "does not overlap"),
+                row(1, tiles + "-o OUT/tiles --drape IN/drape/missing.tif", "missing.tif", "no such file"),
+                row(1, tiles + "-o OUT/relief.pmtiles --drape IN/drape/missing.tif", "missing.tif",
+                        "no such file"),
+                row(1, tiles + "-o OUT/tiles --drape IN/drape/text.png", "text.png", "not a PNG or JPEG"),
+                row(1, tiles + "-o OUT/relief.pmtiles --drape IN/drape/far.png", "far.png",
+                        "does not overlap the picture"));
     }
 
     @ParameterizedTest(name = "{0}")

@@ -209,6 +209,23 @@ class DrapeCliTest {
     }
 
     @Test
+    void tilesTakeTheDrapeAsTheirJobDoes() throws Exception {
+        Path cli = dir.resolve("cli.pmtiles");
+        Path api = dir.resolve("api.pmtiles");
+        Path drape = Path.of(GOLDEN + "bigtujunga_crop_table2_wgs84.tif");
+        run("tiles", DEM, "--zoom", "11", "--tint", "etopo1", "--drape", drape.toString(), "-o", cli.toString());
+        io.github.jdem846.tiles.TileJob.of(Path.of(DEM), new io.github.jdem846.tiles.ZoomRange(11, 11))
+                .withScene(io.github.jdem846.render.Scene.defaults()
+                        .withTint(io.github.jdem846.tint.ColorRamp.named("etopo1"))
+                        .withDrape(io.github.jdem846.drape.Drape.of(java.util.List.of(drape))))
+                .run(api, io.github.jdem846.job.JobListener.NONE);
+        Path plain = dir.resolve("plain.pmtiles");
+        run("tiles", DEM, "--zoom", "11", "--tint", "etopo1", "-o", plain.toString());
+        assertArrayEquals(Files.readAllBytes(api), Files.readAllBytes(cli));
+        assertTrue(!Arrays.equals(Files.readAllBytes(plain), Files.readAllBytes(cli)), "the drape is drawn");
+    }
+
+    @Test
     void anImageFourTimesFinerIsReadEveryFourthPixelTheSameFromGeoTiffAndPng() throws IOException {
         // our own relief at 4 × the DEM's resolution (a smooth surface: neighbouring pixels differ), as an RGBA
         // GeoTIFF and as a PNG with .pgw and .prj; Jacksboro is latitude/longitude, so are both images
