@@ -30,6 +30,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
 
+// Longer than the project's other classes on purpose: this record is the public entry point of a picture (its
+// options as withers, and each way to run it: in memory, written whole or in tiles, float values, a plan without
+// rendering), and about 40 % of it is Javadoc. The work itself is elsewhere: planning in PicturePlan and JobMemory,
+// reading in DemLoader, rendering in AreaRenderer and render.Renderer, tiles in TiledWriter.
+
 /**
  * One picture of one DEM file, from file to pixels (and to a file): plans the read (the window, the halo each stage
  * needs around it, the decimation for a smaller picture), reads only that, lights the grid with the {@link Sun}
