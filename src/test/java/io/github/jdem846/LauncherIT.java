@@ -116,6 +116,8 @@ class LauncherIT {
             f.setLength(17L << 20);
         }
         assertEquals(4, tier(cache, "hillshade", big.toString(), "-o", out.toString()), "17 MiB of input");
+        assertEquals(1, tier(cache, "hillshade", dem.toString(), "-o", big.toString()),
+                "an existing output file is not input");
     }
 
     /** The JIT's highest tier the launcher chose for a command (which may fail: only the JVM's flags count). */
