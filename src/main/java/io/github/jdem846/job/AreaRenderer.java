@@ -1,6 +1,7 @@
 package io.github.jdem846.job;
 
 import io.github.jdem846.internal.Clamp;
+import io.github.jdem846.internal.Rounding;
 import io.github.jdem846.raster.Dem;
 import io.github.jdem846.render.RenderProgress;
 import io.github.jdem846.render.RenderSettings;
@@ -75,7 +76,7 @@ final class AreaRenderer {
         byte[] bytes = new byte[factor.length];
         for (int i = 0; i < factor.length; i++) {
             float f = factor[i];
-            bytes[i] = f == f ? (byte) (1 + Math.round(Clamp.between(f, 0f, 1f) * 254f)) : 0;
+            bytes[i] = f == f ? (byte) (1 + Rounding.halfUp(Clamp.between(f, 0f, 1f) * 254f)) : 0;
         }
         return bytes;
     }
@@ -84,7 +85,7 @@ final class AreaRenderer {
     private static byte[] maskBytes(float[] mask) {
         byte[] bytes = new byte[mask.length];
         for (int i = 0; i < mask.length; i++) {
-            bytes[i] = (byte) Math.round(Clamp.between(mask[i], 0f, 1f) * 255f);
+            bytes[i] = (byte) Rounding.halfUp(Clamp.between(mask[i], 0f, 1f) * 255f);
         }
         return bytes;
     }

@@ -1,5 +1,6 @@
 package io.github.jdem846.shadow;
 
+import io.github.jdem846.internal.Rounding;
 /**
  * The result of a shadow computation: for each cell the shadowed fraction of the sun, 0 = fully lit, 1 = fully in
  * shadow (hard shadows give only 0 and 1). Row 0 is north, row-major, the size of the DEM or window it was computed
@@ -75,7 +76,7 @@ public final class ShadowMask {
     public byte[] toBytes() {
         byte[] b = new byte[shadow.length];
         for (int i = 0; i < shadow.length; i++) {
-            b[i] = (byte) Math.round(shadow[i] * 255f);
+            b[i] = (byte) Rounding.halfUp(shadow[i] * 255f);
         }
         return b;
     }
