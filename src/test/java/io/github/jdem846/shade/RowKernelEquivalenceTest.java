@@ -107,7 +107,8 @@ class RowKernelEquivalenceTest {
                     }
                 }
                 for (int c = col0; c < col0 + w; c++) {
-                    assertEquals(finiteWindow(v, width, height, c, r), inRun[c], "trial " + t + " (" + c + ", " + r + ")");
+                    assertEquals(finiteWindow(v, width, height, c, r), inRun[c],
+                            "trial " + t + " (" + c + ", " + r + ")");
                 }
             }
         }
@@ -160,14 +161,18 @@ class RowKernelEquivalenceTest {
             double dy = spacing.northSouth(r);
             for (int c = c0; c < c0 + tw; c++) {
                 int o = (r - r0) * tw + c - c0;
-                String at = what + " cell (" + c + ", " + r + ")";
+                final int cc = c;
+                final int rr = r;
+                java.util.function.Supplier<String> at = () -> what + " cell (" + cc + ", " + rr + ")";
                 float hornCell = HornIllumination.cell(v, width, height, c, r, win, zf, dx, dy, dx * dy, light.east(),
                         light.north(), light.up());
-                assertEquals(Float.floatToRawIntBits(hornCell), Float.floatToRawIntBits(horn[o]), at + " horn");
+                assertEquals(Float.floatToRawIntBits(hornCell), Float.floatToRawIntBits(horn[o]),
+                        () -> at.get() + " horn");
                 float jdemCell = Float.isNaN(v[r * width + c]) ? Float.NaN
                         : JDem846Illumination.general(v, width, height, c, r, dx, dy, k, light.east(), light.north(),
                         light.up(), light.isBelowHorizon());
-                assertEquals(Float.floatToRawIntBits(jdemCell), Float.floatToRawIntBits(jdem[o]), at + " jdem846");
+                assertEquals(Float.floatToRawIntBits(jdemCell), Float.floatToRawIntBits(jdem[o]),
+                        () -> at.get() + " jdem846");
             }
         }
     }
