@@ -13,6 +13,12 @@ import io.github.jdem846.internal.Clamp;
  */
 final class HornRows {
 
+    /**
+     * Cells per pass of the loops: a longer run is done in pieces of this many, so that the scratch arrays stay in
+     * the L1 cache (JMH over whole 2048-cell rows was slower without).
+     */
+    static final int CHUNK = 256;
+
     private final double zf;
     private final double le;
     private final double ln;
@@ -25,7 +31,7 @@ final class HornRows {
     private final double[] len;
 
     /**
-     * @param maxRun longest run to be shaded
+     * @param maxRun longest run to be shaded (scratch arrays are sized for at most {@link #CHUNK} cells)
      * @param zf     the z-factor divided by 8
      * @param le     the light's east component
      * @param ln     its north component
@@ -36,12 +42,13 @@ final class HornRows {
         this.le = le;
         this.ln = ln;
         this.lu = lu;
-        top = new double[maxRun + 2];
-        bottom = new double[maxRun + 2];
-        columnSum = new double[maxRun + 2];
-        nx = new double[maxRun];
-        ny = new double[maxRun];
-        len = new double[maxRun];
+        final int chunk = Math.min(maxRun, CHUNK);
+        top = new double[chunk + 2];
+        bottom = new double[chunk + 2];
+        columnSum = new double[chunk + 2];
+        nx = new double[chunk];
+        ny = new double[chunk];
+        len = new double[chunk];
     }
 
     /**
@@ -65,6 +72,13 @@ final class HornRows {
      * @param dy    north–south cell spacing of the row
      */
     void shade(float[] v, int width, int r, int a, int b, double dx, double dy, float[] out, int o) {
+        for (int from = a; from < b; from += CHUNK) {
+            shadeChunk(v, width, r, from, Math.min(b, from + CHUNK), dx, dy, out, o + from - a);
+        }
+    }
+
+    /** {@link #shade} of at most {@link #CHUNK} cells. */
+    private void shadeChunk(float[] v, int width, int r, int a, int b, double dx, double dy, float[] out, int o) {
         final int n = b - a;
         final int up = (r - 1) * width + a - 1;
         final int mid = up + width;

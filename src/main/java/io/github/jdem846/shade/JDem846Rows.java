@@ -12,6 +12,12 @@ import io.github.jdem846.internal.Clamp;
 final class JDem846Rows {
 
     /**
+     * Cells per pass of the loops: a longer run is done in pieces of this many, so that the scratch arrays stay in
+     * the L1 cache (JMH over whole 2048-cell rows was slower without).
+     */
+    static final int CHUNK = 256;
+
+    /**
      * Smallest cell spacing, metres, of a row shaded here: with both spacings at least this and at most
      * {@link CellSpacing#MAX_SPACING_METERS}, finite heights and a height factor of at most 10¹², no squared length
      * below is 0 or overflows (the mean's z component is at least about 10⁻⁶⁵), so the per-cell path's "length 0"
@@ -37,7 +43,7 @@ final class JDem846Rows {
     private final double[] z;
 
     /**
-     * @param maxRun       longest run to be shaded
+     * @param maxRun       longest run to be shaded (scratch arrays are sized for at most {@link #CHUNK} cells)
      * @param k            z-factor × light multiple
      * @param le           the light's east component
      * @param ln           its north component
@@ -49,18 +55,19 @@ final class JDem846Rows {
         this.le = le;
         this.ln = ln;
         this.lu = lu;
+        final int chunk = Math.min(maxRun, CHUNK);
         this.belowHorizon = belowHorizon;
-        aW = new double[maxRun];
-        aE = new double[maxRun];
-        bN = new double[maxRun];
-        bS = new double[maxRun];
-        iWN = new double[maxRun];
-        iWS = new double[maxRun];
-        iES = new double[maxRun];
-        iEN = new double[maxRun];
-        x = new double[maxRun];
-        y = new double[maxRun];
-        z = new double[maxRun + 2];
+        aW = new double[chunk];
+        aE = new double[chunk];
+        bN = new double[chunk];
+        bS = new double[chunk];
+        iWN = new double[chunk];
+        iWS = new double[chunk];
+        iES = new double[chunk];
+        iEN = new double[chunk];
+        x = new double[chunk];
+        y = new double[chunk];
+        z = new double[chunk + 2];
     }
 
     /**
@@ -84,6 +91,13 @@ final class JDem846Rows {
      * @param dy    north–south cell spacing of the row
      */
     void shade(float[] v, int width, int r, int a, int b, double dx, double dy, float[] out, int o) {
+        for (int from = a; from < b; from += CHUNK) {
+            shadeChunk(v, width, r, from, Math.min(b, from + CHUNK), dx, dy, out, o + from - a);
+        }
+    }
+
+    /** {@link #shade} of at most {@link #CHUNK} cells. */
+    private void shadeChunk(float[] v, int width, int r, int a, int b, double dx, double dy, float[] out, int o) {
         final int n = b - a;
         final int mid = r * width + a;
         final int up = mid - width;
