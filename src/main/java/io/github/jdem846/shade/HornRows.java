@@ -81,41 +81,61 @@ final class HornRows {
     private void shadeChunk(float[] v, int width, int r, int a, int b, double dx, double dy, float[] out, int o) {
         final int n = b - a;
         final int up = (r - 1) * width + a - 1;
+        columnSums(v, up, width, top, bottom, columnSum, n + 2);
+        // −zf · sum · spacing, as the per-cell path's "-zf * gx * dy" groups it
+        final double mzf = -zf;
+        eastMinusWest(columnSum, mzf, dy, nx, n);
+        northMinusSouth(top, bottom, mzf, dx, ny, n);
+        final double area = dx * dy;
+        lengths(nx, ny, area * area, len, n);
+        cosines(nx, ny, le, ln, area * lu, len, n);
+        store(len, out, o, n);
+    }
+
+    // One loop per method: small compilations, and no on-stack replacement of a method with many loops (which
+    // HotSpot compiled once per loop, slowing a one-shot command down).
+
+    /** The rows above and below as doubles, and the column sums top + 2·mid + bottom. */
+    private static void columnSums(float[] v, int up, int width, double[] t, double[] u, double[] s, int n) {
         final int mid = up + width;
         final int down = mid + width;
-        final double[] t = top;
-        final double[] u = bottom;
-        final double[] s = columnSum;
-        final double[] x = nx;
-        final double[] y = ny;
-        final double[] l = len;
-        for (int j = 0; j < n + 2; j++) {
+        for (int j = 0; j < n; j++) {
             final double tj = v[up + j];
             final double uj = v[down + j];
             t[j] = tj;
             u[j] = uj;
             s[j] = tj + 2 * (double) v[mid + j] + uj;
         }
-        // −zf · sum · spacing, as the per-cell path's "-zf * gx * dy" groups it
-        final double mzf = -zf;
+    }
+
+    private static void eastMinusWest(double[] s, double mzf, double dy, double[] x, int n) {
         for (int k = 0; k < n; k++) {
             x[k] = mzf * (s[k + 2] - s[k]) * dy;
         }
+    }
+
+    private static void northMinusSouth(double[] t, double[] u, double mzf, double dx, double[] y, int n) {
         for (int k = 0; k < n; k++) {
             y[k] = mzf * ((t[k] + 2 * t[k + 1] + t[k + 2]) - (u[k] + 2 * u[k + 1] + u[k + 2])) * dx;
         }
-        final double area = dx * dy;
-        final double areaSquared = area * area;
+    }
+
+    private static void lengths(double[] x, double[] y, double areaSquared, double[] l, int n) {
         for (int k = 0; k < n; k++) {
             l[k] = Math.sqrt(x[k] * x[k] + y[k] * y[k] + areaSquared);
         }
-        // Kept apart from the square root: C2 (JDK 17) left the two together scalar.
-        final double areaUp = area * lu;
+    }
+
+    /** The dot products over the lengths, in place; apart from the roots, which C2 (JDK 17) left scalar with it. */
+    private static void cosines(double[] x, double[] y, double le, double ln, double areaUp, double[] l, int n) {
         for (int k = 0; k < n; k++) {
             l[k] = (x[k] * le + y[k] * ln + areaUp) / l[k];
         }
+    }
+
+    private static void store(double[] c, float[] out, int o, int n) {
         for (int k = 0; k < n; k++) {
-            out[o + k] = (float) Clamp.between(l[k], -1.0, 1.0);
+            out[o + k] = (float) Clamp.between(c[k], -1.0, 1.0);
         }
     }
 }

@@ -100,70 +100,87 @@ final class JDem846Rows {
     private void shadeChunk(float[] v, int width, int r, int a, int b, double dx, double dy, float[] out, int o) {
         final int n = b - a;
         final int mid = r * width + a;
-        final int up = mid - width;
-        final int down = mid + width;
-        final double mdy = -dy;
-        final double mdx = -dx;
-        // The rows as doubles, then the four neighbours relative to the centre, times k, times the spacing (the
-        // per-cell path's aW, aE, bN, bS: "dy * zW", "-dy * zE", "-dx * zN", "dx * zS" with
-        // zW = ((double) west − centre) · k); in x, y, z, which are free until further down.
+        // The rows as doubles (in x, y, z, free until further down), then the four neighbours relative to the
+        // centre, times k, times the spacing: the per-cell path's aW, aE, bN, bS ("dy * zW", "-dy * zE",
+        // "-dx * zN", "dx * zS" with zW = ((double) west − centre) · k).
         final double[] m = z;
         final double[] t = x;
         final double[] u = y;
-        for (int j = 0; j < n + 2; j++) {
-            m[j] = v[mid - 1 + j];
-        }
-        for (int j = 0; j < n; j++) {
-            t[j] = v[up + j];
-        }
-        for (int j = 0; j < n; j++) {
-            u[j] = v[down + j];
-        }
-        for (int j = 0; j < n; j++) {
-            aW[j] = dy * ((m[j] - m[j + 1]) * k);
-        }
-        for (int j = 0; j < n; j++) {
-            aE[j] = mdy * ((m[j + 2] - m[j + 1]) * k);
-        }
-        for (int j = 0; j < n; j++) {
-            bN[j] = mdx * ((t[j] - m[j + 1]) * k);
-        }
-        for (int j = 0; j < n; j++) {
-            bS[j] = dx * ((u[j] - m[j + 1]) * k);
-        }
+        toDouble(v, mid - 1, m, n + 2);
+        toDouble(v, mid - width, t, n);
+        toDouble(v, mid + width, u, n);
+        relative(m, 0, m, dy, k, aW, n);
+        relative(m, 2, m, -dy, k, aE, n);
+        relative(t, 0, m, -dx, k, bN, n);
+        relative(u, 0, m, dx, k, bS, n);
         final double c = dx * dy;
         final double cc = c * c;
-        // 1/length of each triangle's normal; the squared lengths are ≥ cc > 0 here
+        inverseLengths(aW, bN, cc, iWN, n);
+        inverseLengths(aW, bS, cc, iWS, n);
+        inverseLengths(aE, bS, cc, iES, n);
+        inverseLengths(aE, bN, cc, iEN, n);
+        weighted(aW, iWN, iWS, aE, iES, iEN, x, n);
+        weighted(bN, iWN, iEN, bS, iWS, iES, y, n);
+        upward(c, iWN, iWS, iES, iEN, z, n);
+        // the length of the mean, then the dot product with the light divided by it (in iWN: free now)
+        lengths(x, y, z, iWN, n);
+        cosines(x, y, z, le, ln, lu, iWN, n);
+        store(iWN, belowHorizon, out, o, n);
+    }
+
+    // One loop per method: small compilations, and no on-stack replacement of a method with many loops (which
+    // HotSpot compiled once per loop, slowing a one-shot command down).
+
+    private static void toDouble(float[] v, int from, double[] dst, int n) {
         for (int j = 0; j < n; j++) {
-            iWN[j] = 1.0 / Math.sqrt(aW[j] * aW[j] + bN[j] * bN[j] + cc);
+            dst[j] = v[from + j];
         }
+    }
+
+    /** f · ((neighbour − centre) · k), the centre being {@code m[j + 1]}. */
+    private static void relative(double[] src, int off, double[] m, double f, double k, double[] dst, int n) {
         for (int j = 0; j < n; j++) {
-            iWS[j] = 1.0 / Math.sqrt(aW[j] * aW[j] + bS[j] * bS[j] + cc);
+            dst[j] = f * ((src[off + j] - m[j + 1]) * k);
         }
+    }
+
+    /** 1/length of a triangle's normal (a, b, c); the squared lengths are ≥ cc > 0 here. */
+    private static void inverseLengths(double[] a, double[] b, double cc, double[] dst, int n) {
         for (int j = 0; j < n; j++) {
-            iES[j] = 1.0 / Math.sqrt(aE[j] * aE[j] + bS[j] * bS[j] + cc);
+            dst[j] = 1.0 / Math.sqrt(a[j] * a[j] + b[j] * b[j] + cc);
         }
+    }
+
+    /** One horizontal component of the sum of the four unit normals. */
+    private static void weighted(double[] a, double[] p, double[] q, double[] b, double[] r, double[] s, double[] dst,
+                                 int n) {
         for (int j = 0; j < n; j++) {
-            iEN[j] = 1.0 / Math.sqrt(aE[j] * aE[j] + bN[j] * bN[j] + cc);
+            dst[j] = a[j] * (p[j] + q[j]) + b[j] * (r[j] + s[j]);
         }
+    }
+
+    /** The up component of the sum of the four unit normals. */
+    private static void upward(double c, double[] p, double[] q, double[] r, double[] s, double[] dst, int n) {
         for (int j = 0; j < n; j++) {
-            x[j] = aW[j] * (iWN[j] + iWS[j]) + aE[j] * (iES[j] + iEN[j]);
+            dst[j] = c * (p[j] + q[j] + r[j] + s[j]);
         }
-        for (int j = 0; j < n; j++) {
-            y[j] = bN[j] * (iWN[j] + iEN[j]) + bS[j] * (iWS[j] + iES[j]);
-        }
-        for (int j = 0; j < n; j++) {
-            z[j] = c * (iWN[j] + iWS[j] + iES[j] + iEN[j]);
-        }
-        // the length of the mean, then the dot product with the light divided by it (into iWN, iWS: free now)
-        final double[] len = iWN;
+    }
+
+    private static void lengths(double[] x, double[] y, double[] z, double[] len, int n) {
         for (int j = 0; j < n; j++) {
             len[j] = Math.sqrt(x[j] * x[j] + y[j] * y[j] + z[j] * z[j]);
         }
-        final double[] d = iWS;
+    }
+
+    /** The dot products over the lengths, in place; apart from the roots, which C2 (JDK 17) left scalar with it. */
+    private static void cosines(double[] x, double[] y, double[] z, double le, double ln, double lu, double[] len,
+                                int n) {
         for (int j = 0; j < n; j++) {
-            d[j] = (x[j] * le + y[j] * ln + z[j] * lu) / len[j];
+            len[j] = (x[j] * le + y[j] * ln + z[j] * lu) / len[j];
         }
+    }
+
+    private static void store(double[] d, boolean belowHorizon, float[] out, int o, int n) {
         if (belowHorizon) {
             for (int j = 0; j < n; j++) {
                 final double dj = d[j];
