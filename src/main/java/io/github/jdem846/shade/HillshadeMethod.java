@@ -27,7 +27,19 @@ public enum HillshadeMethod {
             if (Float.isNaN(illumination)) {
                 return 0;
             }
-            double channel = Brightness.adjustBrightness(0.5, options.tone(illumination));
+            // Brightness.adjustBrightness(0.5, options.tone(illumination)) without branches on the sign, which a
+            // hillshade makes unpredictable: the intensity factor is picked by the sign bit, and eq. 8 on 0.5 is
+            // 0.5 + 0.5·t for either sign (0.5·(1 + t) for t < 0 rounds to the same double: halving is exact).
+            // Equal bit for bit (HillshadeMethodTest).
+            final double d = illumination;
+            final long negative = Float.floatToRawIntBits(illumination) >> 31;
+            final long light = Double.doubleToRawLongBits(options.relativeLightIntensity());
+            final long dark = Double.doubleToRawLongBits(options.relativeDarkIntensity());
+            double t = d * Double.longBitsToDouble(light ^ ((light ^ dark) & negative));
+            if (options.spotExponent() != 1.0) {
+                t = Brightness.spot(t, options.spotExponent());
+            }
+            final double channel = Clamp.between(0.5 + 0.5 * Clamp.between(t, -1.0, 1.0), 0.0, 1.0);
             return 1 + (int) Math.rint(254.0 * channel);
         }
     },
@@ -48,8 +60,12 @@ public enum HillshadeMethod {
             if (Float.isNaN(illumination)) {
                 return 0;
             }
-            double cang254 = 254.0 * illumination;
-            return toByte(cang254 <= 0 ? 1.0 : 1.0 + cang254);
+            // toByte(cang254 <= 0 ? 1.0 : 1.0 + cang254) with cang254 = 254·illumination, without a branch on the
+            // sign: a negative illumination (sign bit set) becomes +0, and from 1 up the byte is 255 (equal bit for
+            // bit, HillshadeMethodTest).
+            final int bits = Float.floatToRawIntBits(illumination);
+            final float lit = Float.intBitsToFloat(bits & ~(bits >> 31));
+            return lit >= 1f ? 255 : (int) Math.rint((float) (1.0 + 254.0 * lit));
         }
     },
 

@@ -21,6 +21,9 @@ import java.util.Objects;
  * given, also at or below the horizon, as gdaldem does. gdaldem's bytes are {@link HillshadeMethod#gray}.
  * Deviation: gdaldem approximates 1/√ with an SSE estimate plus one Newton step (relative error ≈ 1e−7); this uses
  * an exact square root.
+ *
+ * <p>Cells whose window is inside the grid and finite are computed a row segment at a time by {@link HornRows}
+ * (SIMD-friendly loops, the same floats); the others one by one through {@link GdalWindow} ({@link #cell}).
  */
 final class HornIllumination implements IlluminationStage {
 
@@ -46,45 +49,40 @@ final class HornIllumination implements IlluminationStage {
         final int width = dem.width();
         final int height = dem.height();
         final double[] win = new double[9];
+        final FiniteWindows windows = new FiniteWindows(v, width, height, col0, row0, w, h);
+        final int[] runs = new int[FiniteWindows.runsLength(w)];
+        final HornRows rows = new HornRows(w, zf, le, ln, lu);
         for (int r = row0; r < row0 + h; r++) {
             final double dx = spacing.eastWest(r);
             final double dy = spacing.northSouth(r);
             final double area = dx * dy;
-            final boolean innerRow = r >= 1 && r <= height - 2;
-            int o = (r - row0) * w;
-            for (int c = col0; c < col0 + w; c++, o++) {
-                if (innerRow && c >= 1 && c <= width - 2) {
-                    // inside the grid with no no-data around: the nine cells straight from the array (the same
-                    // numbers GdalWindow gives, without its window array). The same block is in
-                    // MultidirectionalIllumination: one loop for both with the formula as a per-cell callback was
-                    // ~30 % slower (JMH HillshadeBenchmark, 4 forks: Horn 34.6 against 51.0 Mcells/s)
-                    final int i = (r - 1) * width + c - 1;
-                    final int j = i + width;
-                    final int k = j + width;
-                    final double w0 = v[i];
-                    final double w1 = v[i + 1];
-                    final double w2 = v[i + 2];
-                    final double w3 = v[j];
-                    final double w4 = v[j + 1];
-                    final double w5 = v[j + 2];
-                    final double w6 = v[k];
-                    final double w7 = v[k + 1];
-                    final double w8 = v[k + 2];
-                    final double sum = w0 + w1 + w2 + w3 + w4 + w5 + w6 + w7 + w8;
-                    if (sum == sum) {
-                        out[o] = shade((w2 + 2 * w5 + w8) - (w0 + 2 * w3 + w6),
-                                (w0 + 2 * w1 + w2) - (w6 + 2 * w7 + w8), zf, dx, dy, area, le, ln, lu);
-                        continue;
-                    }
+            final int o = (r - row0) * w - col0;
+            final int n = HornRows.applies(dx, dy) ? windows.runs(r, runs) : 0;
+            int c = col0;
+            for (int i = 0; i < n; i += 2) {
+                for (; c < runs[i]; c++) {
+                    out[o + c] = cell(v, width, height, c, r, win, zf, dx, dy, area, le, ln, lu);
                 }
-                if (!GdalWindow.fill(v, width, height, c, r, win)) {
-                    out[o] = Float.NaN;
-                    continue;
-                }
-                out[o] = shade((win[2] + 2 * win[5] + win[8]) - (win[0] + 2 * win[3] + win[6]),
-                        (win[0] + 2 * win[1] + win[2]) - (win[6] + 2 * win[7] + win[8]), zf, dx, dy, area, le, ln, lu);
+                rows.shade(v, width, r, runs[i], runs[i + 1], dx, dy, out, o + runs[i]);
+                c = runs[i + 1];
+            }
+            for (; c < col0 + w; c++) {
+                out[o + c] = cell(v, width, height, c, r, win, zf, dx, dy, area, le, ln, lu);
             }
         }
+    }
+
+    /**
+     * One cell through gdaldem's window ({@link GdalWindow}): the cells {@link HornRows} does not take (grid edge,
+     * no-data or infinity in the window, a row of zero area), and the reference it must equal.
+     */
+    static float cell(float[] v, int width, int height, int c, int r, double[] win, double zf, double dx, double dy,
+                      double area, double le, double ln, double lu) {
+        if (!GdalWindow.fill(v, width, height, c, r, win)) {
+            return Float.NaN;
+        }
+        return shade((win[2] + 2 * win[5] + win[8]) - (win[0] + 2 * win[3] + win[6]),
+                (win[0] + 2 * win[1] + win[2]) - (win[6] + 2 * win[7] + win[8]), zf, dx, dy, area, le, ln, lu);
     }
 
     /** The clamped cosine of incidence from Horn's sums gx (east) and gy (north). */

@@ -7,8 +7,9 @@ import java.util.Objects;
 /**
  * An illumination stage computed cell by cell from Horn's (1981) 3×3 sums on gdaldem's window ({@link GdalWindow},
  * the {@code -compute_edges} rules): the subclass turns each cell's sums and the row's cell spacing into a value.
- * One loop with a per-cell callback, simpler and about 30 % slower than the hand-inlined loops of
- * {@link HornIllumination} and {@link MultidirectionalIllumination}; used by the rarer gdaldem variants.
+ * One loop with a per-cell callback, simpler and slower than the row loops of {@link HornIllumination}
+ * ({@link HornRows}) and the hand-inlined loop of {@link MultidirectionalIllumination}; used by the rarer gdaldem
+ * variants.
  */
 abstract class HornWindowStage implements IlluminationStage {
 

@@ -34,6 +34,9 @@ import java.util.Objects;
  * <p>Light at or below the horizon ({@link LightDirection#isBelowHorizon()}): there is no direct light, so the
  * result is min(cosine, 0): nothing is lit, flat ground gets sin(elevation) ≤ 0 and slopes facing away from the
  * light darken as usual.
+ *
+ * <p>Cells whose 3×3 window is inside the grid and finite are computed a row segment at a time by
+ * {@link JDem846Rows} (SIMD-friendly loops, the same floats); the others one by one ({@link #general}).
  */
 final class JDem846Illumination implements IlluminationStage {
 
@@ -59,42 +62,38 @@ final class JDem846Illumination implements IlluminationStage {
         final float[] v = dem.backingArray();
         final int width = dem.width();
         final int height = dem.height();
+        final FiniteWindows windows = new FiniteWindows(v, width, height, col0, row0, w, h);
+        final int[] runs = new int[FiniteWindows.runsLength(w)];
+        final JDem846Rows rows = new JDem846Rows(w, k, le, ln, lu, belowHorizon);
         for (int r = row0; r < row0 + h; r++) {
             final double dx = spacing.eastWest(r);
             final double dy = spacing.northSouth(r);
-            final int rowStart = r * width;
-            int o = (r - row0) * w;
-            for (int c = col0; c < col0 + w; c++, o++) {
-                final float zc = v[rowStart + c];
-                if (Float.isNaN(zc)) {
-                    out[o] = Float.NaN;
-                    continue;
+            final int o = (r - row0) * w - col0;
+            final int n = JDem846Rows.applies(dx, dy) ? windows.runs(r, runs) : 0;
+            int c = col0;
+            for (int i = 0; i < n; i += 2) {
+                for (; c < runs[i]; c++) {
+                    out[o + c] = cell(v, width, height, c, r, dx, dy, k, le, ln, lu, belowHorizon);
                 }
-                if (c >= 1 && c + 1 < width && r >= 1 && r + 1 < height) {
-                    // inside the grid: the four neighbours straight from the array; when none is missing (their
-                    // sum is not NaN) this is what the general path below computes, without its fills
-                    final double e = (double) v[rowStart + c + 1] - zc;
-                    final double wv = (double) v[rowStart + c - 1] - zc;
-                    final double n = (double) v[rowStart - width + c] - zc;
-                    final double s = (double) v[rowStart + width + c] - zc;
-                    final double sum = e + wv + n + s;
-                    if (sum == sum) {
-                        double d = cosineOfIncidence(dx, dy, e * k, wv * k, n * k, s * k, le, ln, lu);
-                        if (belowHorizon && d > 0) {
-                            d = 0.0;
-                        }
-                        out[o] = (float) Clamp.between(d, -1.0, 1.0);
-                        continue;
-                    }
-                }
-                out[o] = general(v, width, height, c, r, dx, dy, k, le, ln, lu, belowHorizon);
+                rows.shade(v, width, r, runs[i], runs[i + 1], dx, dy, out, o + runs[i]);
+                c = runs[i + 1];
+            }
+            for (; c < col0 + w; c++) {
+                out[o + c] = cell(v, width, height, c, r, dx, dy, k, le, ln, lu, belowHorizon);
             }
         }
     }
 
+    /** {@link #general}, or NaN for a no-data centre. */
+    private static float cell(float[] v, int width, int height, int c, int r, double dx, double dy, double k,
+                              double le, double ln, double lu, boolean belowHorizon) {
+        return Float.isNaN(v[r * width + c]) ? Float.NaN
+                : general(v, width, height, c, r, dx, dy, k, le, ln, lu, belowHorizon);
+    }
+
     /**
-     * One cell (centre not no-data) with the neighbours read with bounds checks and a missing one filled: also the
-     * reference the direct interior path must equal (WindowKernelEquivalenceTest).
+     * One cell (centre not no-data) with the neighbours read with bounds checks and a missing one filled: the cells
+     * {@link JDem846Rows} does not take, and the reference it must equal (WindowKernelEquivalenceTest).
      */
     static float general(float[] v, int width, int height, int c, int r, double dx, double dy, double k, double le,
                          double ln, double lu, boolean belowHorizon) {

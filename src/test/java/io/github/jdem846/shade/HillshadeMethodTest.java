@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.jdem846.internal.Brightness;
 import org.junit.jupiter.api.Test;
 
 class HillshadeMethodTest {
@@ -43,6 +44,41 @@ class HillshadeMethodTest {
         assertEquals(255, m.gray(1f, D));
         assertEquals(128, m.gray(0.5f, D));   // 1 + 127
         assertEquals(181, m.gray((float) Math.sin(Math.toRadians(45)), D)); // 1 + 179.605 → 181 (gdaldem, flat)
+    }
+
+    @Test
+    void grayIsTheDocumentedFormulaBitForBit() {
+        // The branch-free gray of jdem846 and horn against their formulas as documented (the tone, eq. 8 through
+        // Brightness; gdaldem's 1 + 254·cos i): floats across the whole range and densely in [-1, 1].
+        HillshadeOptions[] all = {D, D.withIntensities(0.3, 0.9), D.withIntensities(1, 0), D.withIntensities(-0.0, 0.5),
+            D.withSpotExponent(2), D.withSpotExponent(0.37).withIntensities(0.6, 0.2)};
+        java.util.Random rnd = new java.util.Random(5);
+        for (int n = 0; n < 600_000; n++) {
+            float f = n < 400_000 ? (float) (rnd.nextDouble() * 2.2 - 1.1)
+                    : n < 500_000 ? Float.intBitsToFloat(rnd.nextInt())
+                    : Float.intBitsToFloat(Float.floatToRawIntBits(1f) - 50_000 + n - 500_000);
+            if (n % 2 == 1) {
+                f = -f;
+            }
+            check(f, all);
+        }
+        for (float f : new float[] {0f, -0f, 1f, -1f, Float.MIN_VALUE, -Float.MIN_VALUE, Float.MAX_VALUE,
+            -Float.MAX_VALUE, Float.POSITIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NaN, Math.nextUp(1f),
+            Math.nextDown(1f), Math.nextDown(-1f), Math.nextUp(-1f), 0.5f / 254, 1.5f / 254, 253.5f / 254}) {
+            check(f, all);
+        }
+    }
+
+    private static void check(float f, HillshadeOptions[] all) {
+        for (HillshadeOptions o : all) {
+            int jdem = Float.isNaN(f) ? 0
+                    : 1 + (int) Math.rint(254.0 * Brightness.adjustBrightness(0.5, o.tone(f)));
+            assertEquals(jdem, HillshadeMethod.JDEM846.gray(f, o), () -> "jdem846 " + f + " " + o);
+        }
+        double cang254 = 254.0 * f;
+        float value = (float) (cang254 <= 0 ? 1.0 : 1.0 + cang254);
+        int horn = Float.isNaN(f) ? 0 : (int) Math.rint(Math.max(0f, Math.min(255f, value)));
+        assertEquals(horn, HillshadeMethod.HORN.gray(f, D), () -> "horn " + f);
     }
 
     @Test

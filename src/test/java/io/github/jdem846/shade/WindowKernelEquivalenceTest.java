@@ -9,9 +9,10 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 /**
- * Horn and multidirectional read the nine cells straight from the array where none is missing, and through
- * {@link GdalWindow} elsewhere; jdem846 reads its four neighbours directly inside the grid and through its general
- * path (bounds checks, fills) elsewhere. Both paths must give the same float, bit for bit: checked against a
+ * Horn and jdem846 compute cells with finite windows inside the grid a row at a time ({@link HornRows},
+ * {@link JDem846Rows}), the others through {@link GdalWindow} or jdem846's general path (bounds checks, fills);
+ * multidirectional reads the nine cells straight from the array where none is missing, and through
+ * {@link GdalWindow} elsewhere. Both paths must give the same float, bit for bit: checked against a
  * reference that takes every cell through {@link GdalWindow} with the kernels' documented formulas (jdem846:
  * through {@link JDem846Illumination#general}), on random grids with no-data, infinities and float32 extremes, for
  * whole grids and for tiles.
