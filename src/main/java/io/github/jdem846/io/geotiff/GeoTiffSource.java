@@ -57,6 +57,7 @@ public final class GeoTiffSource implements RasterSource {
     private final long blockBytes;
     private final SampleDecoder decoder = new SampleDecoder();
     private ByteBuffer direct = ByteBuffer.allocateDirect(0);
+    private float[] decoded = new float[0];
 
     private GeoTiffSource(Path file, ImageInputStream stream, ImageReader reader, DemInfo info, int rowBlock,
                           boolean tiled, TiffSubset.Layout layout, FileChannel channel, ValueScale valueScale,
@@ -371,7 +372,9 @@ public final class GeoTiffSource implements RasterSource {
      * Rows {@code [firstRow, firstRow + rows)} of an uncompressed strip or tile at {@code offset}, of
      * {@code rowBytes} each, columns {@code [firstCol, firstCol + cols)}: read into a direct buffer, several rows
      * (at most {@link #CHUNK} bytes) per read, and converted from there in bulk ({@link SampleDecoder}) to
-     * {@code dst[at…]}, {@code stride} cells per row.
+     * {@code dst[at…]}, {@code stride} cells per row: straight into place when the rows are whole and adjacent
+     * there, else all of them at once into {@link #decoded} and copied row by row (one conversion per read, not per
+     * row: a 128² tile has short rows).
      */
     private void readUncompressed(long offset, int rowBytes, int firstRow, int rows, int firstCol, int cols,
                                   float[] dst, int at, int stride) throws IOException {
@@ -391,12 +394,21 @@ public final class GeoTiffSource implements RasterSource {
             return;
         }
         int perRead = Math.max(1, CHUNK / rowBytes);
+        int segment = rowBytes / bytes;
+        boolean inPlace = cols == segment && stride == cols;
         for (int r0 = 0; r0 < rows; r0 += perRead) {
             int n = Math.min(perRead, rows - r0);
             readDirect(offset + (long) (firstRow + r0) * rowBytes, n * rowBytes);
+            if (inPlace) {
+                decoder.decode(direct, type, dst, at + r0 * stride, n * cols);
+                continue;
+            }
+            if (decoded.length < n * segment) {
+                decoded = new float[Math.max(n * segment, Math.min(CHUNK, 2 * decoded.length))];
+            }
+            decoder.decode(direct, type, decoded, 0, n * segment);
             for (int r = 0; r < n; r++) {
-                direct.position(r * rowBytes + firstCol * bytes);
-                decoder.decode(direct, type, dst, at + (r0 + r) * stride, cols);
+                System.arraycopy(decoded, r * segment + firstCol, dst, at + (r0 + r) * stride, cols);
             }
         }
     }
