@@ -135,7 +135,7 @@ public final class BlockReader {
      * with no band buffer and no copies.
      *
      * @param noData   the declared no-data value, NaN for none
-     * @param rowsDone told of the rows finished, band by band
+     * @param rowsDone told of each row finished
      * @return min, max and valid count of the window's cells (no-data rule and value scale applied)
      */
     public static ElevationStatistics readInto(RasterSource source, Window.Cells window, double noData, float[] dst,
@@ -154,8 +154,8 @@ public final class BlockReader {
             source.readRows(window.col(), window.row() + r0, w, n, dst, base);
             for (int r = 0; r < n; r++) {
                 range.take(dst, base + r * w, base + (r + 1) * w);
+                rowsDone.add(1);
             }
-            rowsDone.add(n);
         }
         return range.statistics((long) w * h);
     }
