@@ -18,8 +18,8 @@ import java.util.Optional;
  * which would otherwise take a core from the command for nothing (docs/performance.md, "Start-up"). The input is
  * the first argument that names an existing DEM file; without one (the bundled sample, {@code --version}, a typo)
  * nothing is done. When the command will need latitude/longitude ({@link #needsLatLon}), the file's CRS is also
- * resolved by SIS here. For a grid of 16 to 256 MiB, the heap memory it will take is also mapped ahead
- * ({@link #touchGridMemory}). Any failure here is ignored: the command reads the file again and reports its own
+ * resolved by SIS here. For a grid of 16 to 256 MiB that the command reads whole, the heap memory it will take is
+ * also mapped ahead ({@link #touchGridMemory}). Any failure here is ignored: the command reads the file again and reports its own
  * errors.
  */
 final class InputWarmUp {
@@ -51,7 +51,9 @@ final class InputWarmUp {
                 dem.get().geometry().geoLocator();   // SIS's CRS and transform, as the command will
             }
             if (dem.isPresent()) {
-                touchGridMemory(dem.get());
+                if (readsWholeGrid(args)) {
+                    touchGridMemory(dem.get());
+                }
                 warmUpReader(dem.get());
             }
         } catch (IOException | RuntimeException | LinkageError e) {
@@ -75,6 +77,18 @@ final class InputWarmUp {
         }
         float[] grid = new float[(int) (bytes / Float.BYTES)];
         return grid.length;
+    }
+
+    /** The commands that render a picture of the grid in memory, reading it whole (unless told a window or size). */
+    private static final java.util.Set<String> WHOLE_GRID_COMMANDS = java.util.Set.of("hillshade", "render", "tint",
+            "shadows", "skyview");
+
+    /**
+     * True when the command reads its grid whole into memory, so that its memory is worth touching ahead: not
+     * {@code info} (statistics are streamed), {@code tiles} or {@code view} (parts and reduced grids), {@code sun}.
+     */
+    static boolean readsWholeGrid(String[] args) {
+        return args.length > 0 && WHOLE_GRID_COMMANDS.contains(args[0]);
     }
 
     /** Grids from this size on have their memory touched ahead: below, the mapping costs a few milliseconds. */

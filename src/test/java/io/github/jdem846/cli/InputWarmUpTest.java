@@ -70,6 +70,17 @@ class InputWarmUpTest {
         assertEquals(0, InputWarmUp.gridMemoryToTouch(ofSize(100_000, 100_000), Long.MAX_VALUE), "40 GB");
     }
 
+    @Test
+    void onlyTheCommandsThatReadTheWholeGridTouchItsMemory() {
+        for (String command : new String[] {"hillshade", "render", "tint", "shadows", "skyview"}) {
+            assertTrue(InputWarmUp.readsWholeGrid(new String[] {command, BT_FLT, "-o", "x.png"}), command);
+        }
+        for (String command : new String[] {"info", "tiles", "view", "sun", "--version"}) {
+            assertFalse(InputWarmUp.readsWholeGrid(new String[] {command, BT_FLT}), command);
+        }
+        assertFalse(InputWarmUp.readsWholeGrid(new String[0]));
+    }
+
     private static io.github.jdem846.io.DemInfo ofSize(int w, int h) {
         return new io.github.jdem846.io.DemInfo("x.flt", io.github.jdem846.io.DemFormat.GRIDFLOAT,
                 io.github.jdem846.io.SampleType.FLOAT32, 1, io.github.jdem846.raster.GridGeometry.metric(w, h, 30),
