@@ -19,8 +19,8 @@ import java.util.Optional;
  * the first argument that names an existing DEM file; without one (the bundled sample, {@code --version}, a typo)
  * nothing is done. When the command will need latitude/longitude ({@link #needsLatLon}), the file's CRS is also
  * resolved by SIS here. For a grid of 16 to 256 MiB that the command reads whole, the heap memory it will take is
- * also mapped ahead ({@link #touchGridMemory}). Any failure here is ignored: the command reads the file again and reports its own
- * errors.
+ * also mapped ahead ({@link #touchGridMemory}). Any failure here is ignored: the command reads the file again and
+ * reports its own errors.
  */
 final class InputWarmUp {
 
