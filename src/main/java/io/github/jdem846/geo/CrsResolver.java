@@ -37,11 +37,16 @@ import org.opengis.util.FactoryException;
  */
 public final class CrsResolver {
 
-    static {
-        SisLoggers.quiet(); // SIS's routine warnings off stderr, unless the application configured them
+    private CrsResolver() {
     }
 
-    private CrsResolver() {
+    /**
+     * Quiets SIS's routine warnings (unless the application configured them) before a use of SIS; not in a static
+     * initialiser, since a common {@code .prj} is read without SIS and java.util.logging takes tens of
+     * milliseconds to start on a cold JVM.
+     */
+    private static void beforeSis() {
+        SisLoggers.quiet();
     }
 
     /**
@@ -54,6 +59,7 @@ public final class CrsResolver {
         if (code <= 0 || code >= 32767) {
             return Optional.empty();
         }
+        beforeSis();
         try {
             return Optional.of(fromSis(CRS.forCode("EPSG:" + code), code));
         } catch (FactoryException | RuntimeException e) {
@@ -95,6 +101,7 @@ public final class CrsResolver {
         if (common.isPresent()) {
             return common.get();
         }
+        beforeSis();
         CoordinateReferenceSystem crs;
         try {
             crs = CRS.fromWKT(wkt.strip());
@@ -115,6 +122,7 @@ public final class CrsResolver {
      * @return the description, with {@code crs} as its SIS object
      */
     public static CrsInfo fromSis(CoordinateReferenceSystem crs, Integer epsg) {
+        beforeSis();
         SingleCRS horizontal = CRS.getHorizontalComponent(crs);
         CoordinateReferenceSystem base = horizontal != null ? horizontal : crs;
         CoordinateReferenceSystem oriented = AbstractCRS.castOrCopy(base).forConvention(AxesConvention.RIGHT_HANDED);
@@ -142,6 +150,7 @@ public final class CrsResolver {
      * @return metres per unit, or NaN
      */
     public static double linearUnitMetres(int epsgUnitCode) {
+        beforeSis();
         Unit<?> unit = null;
         try {
             unit = Units.valueOfEPSG(epsgUnitCode);
@@ -175,6 +184,7 @@ public final class CrsResolver {
      * @return the ellipsoid, or empty when the code is unknown offline or not an ellipsoid
      */
     public static Optional<Ellipsoid> ellipsoidFromEpsg(int code) {
+        beforeSis();
         for (CommonCRS c : CommonCRS.values()) {
             org.opengis.referencing.datum.Ellipsoid e = c.ellipsoid();
             if (Integer.valueOf(code).equals(epsgIdentifier(e))) {
@@ -191,6 +201,7 @@ public final class CrsResolver {
      * @return the datum's ellipsoid, or empty when the code is unknown offline or not a geodetic datum
      */
     public static Optional<Ellipsoid> ellipsoidOfDatumEpsg(int code) {
+        beforeSis();
         for (CommonCRS c : CommonCRS.values()) {
             GeodeticDatum d = c.datum(false);
             if (d != null && Integer.valueOf(code).equals(epsgIdentifier(d))) {

@@ -155,11 +155,14 @@ public final class DemReader {
             float[] values = new float[outW * outH];
             double noData = info.noDataOrNaN();
             StageProgress rows = new StageProgress(progress, RenderProgress.READ, outH).start();
+            // at full resolution each band is decoded straight into the grid
             ElevationStatistics stats = readInParts(input, source, cells, d, parallelism, minCellsPerPart,
-                    (src, part, outRow0) -> BlockReader.read(src, part, d, noData, (row, v) -> {
-                        System.arraycopy(v, 0, values, (outRow0 + row) * outW, outW);
-                        rows.add(1);
-                    }));
+                    (src, part, outRow0) -> d == 1
+                            ? BlockReader.readInto(src, part, noData, values, outRow0 * outW, rows::add)
+                            : BlockReader.read(src, part, d, noData, (row, v) -> {
+                                System.arraycopy(v, 0, values, (outRow0 + row) * outW, outW);
+                                rows.add(1);
+                            }));
             rows.finish();
             GridGeometry g = info.geometry().window(cells.col(), cells.row(), cells.width(), cells.height());
             if (d > 1) {

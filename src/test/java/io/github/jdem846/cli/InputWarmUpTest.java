@@ -56,6 +56,38 @@ class InputWarmUpTest {
     }
 
     @Test
+    void theGridsMemoryIsTouchedAheadFrom16To256MibAndAnEighthOfTheHeap() throws IOException {
+        io.github.jdem846.io.DemInfo bt = io.github.jdem846.io.DemReader.inspect(Path.of(BT_FLT));
+        long gib = 1L << 30;
+        assertEquals(0, InputWarmUp.gridMemoryToTouch(bt, 6 * gib), "3 MB: mapped by the command itself");
+        assertEquals(0, InputWarmUp.touchGridMemory(bt));
+        assertEquals(64_000_000L, InputWarmUp.gridMemoryToTouch(ofSize(4000, 4000), 6 * gib));
+        assertEquals(0, InputWarmUp.gridMemoryToTouch(ofSize(4000, 4000), 400L << 20), "more than 1/8 of the heap");
+        assertEquals(16L << 20, InputWarmUp.gridMemoryToTouch(ofSize(2048, 2048), 6 * gib));
+        assertEquals(0, InputWarmUp.gridMemoryToTouch(ofSize(2048, 2047), 6 * gib), "just under 16 MiB");
+        assertEquals(256L << 20, InputWarmUp.gridMemoryToTouch(ofSize(8192, 8192), 6 * gib));
+        assertEquals(0, InputWarmUp.gridMemoryToTouch(ofSize(8192, 8193), 6 * gib), "above 256 MiB");
+        assertEquals(0, InputWarmUp.gridMemoryToTouch(ofSize(100_000, 100_000), Long.MAX_VALUE), "40 GB");
+    }
+
+    @Test
+    void onlyTheCommandsThatReadTheWholeGridTouchItsMemory() {
+        for (String command : new String[] {"hillshade", "render", "tint", "shadows", "skyview"}) {
+            assertTrue(InputWarmUp.readsWholeGrid(new String[] {command, BT_FLT, "-o", "x.png"}), command);
+        }
+        for (String command : new String[] {"info", "tiles", "view", "sun", "--version"}) {
+            assertFalse(InputWarmUp.readsWholeGrid(new String[] {command, BT_FLT}), command);
+        }
+        assertFalse(InputWarmUp.readsWholeGrid(new String[0]));
+    }
+
+    private static io.github.jdem846.io.DemInfo ofSize(int w, int h) {
+        return new io.github.jdem846.io.DemInfo("x.flt", io.github.jdem846.io.DemFormat.GRIDFLOAT,
+                io.github.jdem846.io.SampleType.FLOAT32, 1, io.github.jdem846.raster.GridGeometry.metric(w, h, 30),
+                null, java.util.List.of());
+    }
+
+    @Test
     void noDemAmongTheArgumentsGivesNothing() {
         assertEquals(Optional.empty(), InputWarmUp.readFirstDem(new String[0]));
         assertEquals(Optional.empty(), InputWarmUp.readFirstDem(new String[] {"render", "-o", "x.png"}));

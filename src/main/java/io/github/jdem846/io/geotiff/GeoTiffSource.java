@@ -8,6 +8,7 @@ import io.github.jdem846.io.DemInfo;
 import io.github.jdem846.io.SampleType;
 import io.github.jdem846.io.source.MemoryGuard;
 import io.github.jdem846.io.source.RasterSource;
+import io.github.jdem846.io.source.SampleDecoder;
 import io.github.jdem846.io.source.ValueScale;
 import io.github.jdem846.raster.GridGeometry;
 import java.awt.Rectangle;
@@ -54,6 +55,9 @@ public final class GeoTiffSource implements RasterSource {
     private final FileChannel channel;
     private final ValueScale valueScale;
     private final long blockBytes;
+    private final SampleDecoder decoder = new SampleDecoder();
+    private ByteBuffer direct = ByteBuffer.allocateDirect(0);
+    private float[] decoded = new float[0];
 
     private GeoTiffSource(Path file, ImageInputStream stream, ImageReader reader, DemInfo info, int rowBlock,
                           boolean tiled, TiffSubset.Layout layout, FileChannel channel, ValueScale valueScale,
@@ -173,9 +177,14 @@ public final class GeoTiffSource implements RasterSource {
 
     @Override
     public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
+        readRows(col, row, width, rows, dst, 0);
+    }
+
+    @Override
+    public void readRows(int col, int row, int width, int rows, float[] dst, int at) throws IOException {
         if (layout != null) {
             try {
-                readSubset(col, row, width, rows, dst);
+                readSubset(col, row, width, rows, dst, at);
             } catch (IndexOutOfBoundsException | NegativeArraySizeException | IllegalArgumentException
                      | ArithmeticException | java.nio.BufferUnderflowException e) {
                 // what the checks at open did not foresee in a corrupt file: still the file's own error
@@ -201,7 +210,7 @@ public final class GeoTiffSource implements RasterSource {
             throw new DemFormatException(file, "the TIFF decoder returned " + raster.getWidth() + "×"
                     + raster.getHeight() + " cells for a " + readWidth + "×" + rows + " region");
         }
-        copyBand0(raster, col - readCol, 0, width, rows, dst);
+        copyBand0(raster, col - readCol, 0, width, rows, dst, at);
     }
 
     /**
@@ -209,9 +218,9 @@ public final class GeoTiffSource implements RasterSource {
      * sparse (never written), block by block: sparse ones read as the declared no-data, or 0 without one, as GDAL
      * reads them.
      */
-    private void readSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
+    private void readSubset(int col, int row, int width, int rows, float[] dst, int at) throws IOException {
         if (!layout.coversSparse(col, row, width, rows)) {
-            decodeSubset(col, row, width, rows, dst);
+            decodeSubset(col, row, width, rows, dst, at);
             return;
         }
         float fill = info.declaredNoData() != null ? info.declaredNoData().floatValue() : 0f;
@@ -227,22 +236,22 @@ public final class GeoTiffSource implements RasterSource {
                 if (layout.isSparse(by / bh * layout.blocksAcross() + bx / bw)) {
                     java.util.Arrays.fill(part, fill);
                 } else {
-                    decodeSubset(x0, y0, w, h, part);
+                    decodeSubset(x0, y0, w, h, part, 0);
                 }
                 for (int r = 0; r < h; r++) {
-                    System.arraycopy(part, r * w, dst, (y0 - row + r) * width + (x0 - col), w);
+                    System.arraycopy(part, r * w, dst, at + (y0 - row + r) * width + (x0 - col), w);
                 }
             }
         }
     }
 
     /** Decodes the strips or tiles covering the cells, none of them sparse, through a synthetic directory. */
-    private void decodeSubset(int col, int row, int width, int rows, float[] dst) throws IOException {
-        if (layout.decodedHere() && decodeHere(col, row, width, rows, dst)) {
+    private void decodeSubset(int col, int row, int width, int rows, float[] dst, int at) throws IOException {
+        if (layout.decodedHere() && decodeHere(col, row, width, rows, dst, at)) {
             return;
         }
         if (layout.predictorUndoneHere()) {
-            decodeUndoingPredictor(col, row, width, rows, dst);
+            decodeUndoingPredictor(col, row, width, rows, dst, at);
             return;
         }
         TiffSubset.Subset subset = TiffSubset.of(layout, col, row, width, rows);
@@ -267,9 +276,9 @@ public final class GeoTiffSource implements RasterSource {
         }
         if (target != null && raster == target.getRaster()) {
             copyCells(target.array(), raster.getDataBuffer().getDataType(), subset.width(), col - subset.x0(),
-                    row - subset.y0(), width, rows, dst);
+                    row - subset.y0(), width, rows, dst, at);
         } else {
-            copyBand0(raster, col - subset.x0(), row - subset.y0(), width, rows, dst);
+            copyBand0(raster, col - subset.x0(), row - subset.y0(), width, rows, dst, at);
         }
     }
 
@@ -282,7 +291,7 @@ public final class GeoTiffSource implements RasterSource {
      *
      * @return false, with nothing decided, when a block is in the old, bit-reversed LZW (left to TwelveMonkeys)
      */
-    private boolean decodeHere(int col, int row, int width, int rows, float[] dst) throws IOException {
+    private boolean decodeHere(int col, int row, int width, int rows, float[] dst, int at) throws IOException {
         boolean lzw = layout.compression() == 5;
         boolean deflate = layout.compression() == 8 || layout.compression() == 32946;
         int bw = layout.blockWidth();
@@ -302,6 +311,20 @@ public final class GeoTiffSource implements RasterSource {
             byte[] block = lzw || deflate ? new byte[expected] : null;
             for (int bx = col / bw * bw; bx < col + width; bx += bw) {
                 int index = by / bh * layout.blocksAcross() + bx / bw;
+                int x0 = Math.max(bx, col);
+                int x1 = Math.min(Math.min(bx + bw, layout.width()), col + width);
+                if (!lzw && !deflate && layout.predictor() == 1) {
+                    if (layout.byteCounts()[index] < expected) {
+                        throw new DemFormatException(file, "the data of " + (layout.tiled() ? "tile " : "strip ")
+                                + index + " end after " + layout.byteCounts()[index] + " of " + expected
+                                + " bytes (truncated or corrupt TIFF?)");
+                    }
+                    int y0 = Math.max(by, row);
+                    int y1 = Math.min(by + blockRows, row + rows);
+                    readUncompressed(layout.offsets()[index], segment * bytes, y0 - by, y1 - y0, x0 - bx, x1 - x0,
+                            dst, at + (y0 - row) * width + x0 - col, width);
+                    continue;
+                }
                 byte[] stored = readBlock(layout.offsets()[index], layout.byteCounts()[index]);
                 if (lzw && !TiffLzw.isNewStyle(stored, stored.length)) {
                     return false;
@@ -332,15 +355,79 @@ public final class GeoTiffSource implements RasterSource {
                             + index + " end after " + got + " of " + expected + " bytes (truncated or corrupt"
                             + " TIFF?)");
                 }
-                int x0 = Math.max(bx, col);
-                int x1 = Math.min(Math.min(bx + bw, layout.width()), col + width);
                 for (int y = Math.max(by, row); y < Math.min(by + blockRows, row + rows); y++) {
                     PredictorUndo.row(samples, (y - by) * segment * bytes, segment, layout.predictor(),
-                            info.dataType(), layout.order(), x0 - bx, x1 - x0, dst, (y - row) * width + x0 - col);
+                            info.dataType(), layout.order(), x0 - bx, x1 - x0, dst, at + (y - row) * width + x0 - col,
+                            decoder);
                 }
             }
         }
         return true;
+    }
+
+    /** Bytes of an uncompressed block read at once into {@link #direct}. */
+    private static final int CHUNK = 1 << 20;
+
+    /**
+     * Rows {@code [firstRow, firstRow + rows)} of an uncompressed strip or tile at {@code offset}, of
+     * {@code rowBytes} each, columns {@code [firstCol, firstCol + cols)}: read into a direct buffer, several rows
+     * (at most {@link #CHUNK} bytes) per read, and converted from there in bulk ({@link SampleDecoder}) to
+     * {@code dst[at…]}, {@code stride} cells per row: straight into place when the rows are whole and adjacent
+     * there, else all of them at once into {@link #decoded} and copied row by row (one conversion per read, not per
+     * row: a 128² tile has short rows).
+     */
+    private void readUncompressed(long offset, int rowBytes, int firstRow, int rows, int firstCol, int cols,
+                                  float[] dst, int at, int stride) throws IOException {
+        int bytes = layout.bytesPerSample();
+        SampleType type = info.dataType();
+        if (rowBytes > CHUNK) {
+            // a row longer than a chunk: its columns in pieces
+            int pieceCells = CHUNK / bytes;
+            for (int r = 0; r < rows; r++) {
+                for (int c = 0; c < cols; c += pieceCells) {
+                    int n = Math.min(pieceCells, cols - c);
+                    readDirect(offset + (long) (firstRow + r) * rowBytes + (long) (firstCol + c) * bytes,
+                            n * bytes);
+                    decoder.decode(direct, type, dst, at + r * stride + c, n);
+                }
+            }
+            return;
+        }
+        int perRead = Math.max(1, CHUNK / rowBytes);
+        int segment = rowBytes / bytes;
+        boolean inPlace = cols == segment && stride == cols;
+        for (int r0 = 0; r0 < rows; r0 += perRead) {
+            int n = Math.min(perRead, rows - r0);
+            readDirect(offset + (long) (firstRow + r0) * rowBytes, n * rowBytes);
+            if (inPlace) {
+                decoder.decode(direct, type, dst, at + r0 * stride, n * cols);
+                continue;
+            }
+            if (decoded.length < n * segment) {
+                decoded = new float[Math.max(n * segment, Math.min(CHUNK, 2 * decoded.length))];
+            }
+            decoder.decode(direct, type, decoded, 0, n * segment);
+            for (int r = 0; r < n; r++) {
+                System.arraycopy(decoded, r * segment + firstCol, dst, at + (r0 + r) * stride, cols);
+            }
+        }
+    }
+
+    /** Reads {@code length} bytes at {@code position} into {@link #direct}, in the file's byte order. */
+    private void readDirect(long position, int length) throws IOException {
+        if (direct.capacity() < length) {
+            direct = ByteBuffer.allocateDirect(Math.max(length, Math.min(CHUNK, 2 * direct.capacity())));
+        }
+        direct.clear().limit(length);
+        long at = position;
+        while (direct.hasRemaining()) {
+            int n = channel.read(direct, at);
+            if (n < 0) {
+                throw new DemFormatException(file, "the file ends inside a strip or tile (truncated?)");
+            }
+            at += n;
+        }
+        direct.flip().order(layout.order());
     }
 
     /** The stored bytes of one strip or tile. */
@@ -369,7 +456,8 @@ public final class GeoTiffSource implements RasterSource {
      * Like {@link #decodeSubset}, with TwelveMonkeys only decompressing the blocks ({@link TiffSubset#ofBytes})
      * and the predictor undone here, row by row of each block ({@link PredictorUndo}).
      */
-    private void decodeUndoingPredictor(int col, int row, int width, int rows, float[] dst) throws IOException {
+    private void decodeUndoingPredictor(int col, int row, int width, int rows, float[] dst, int at)
+            throws IOException {
         TiffSubset.Subset subset = TiffSubset.ofBytes(layout, col, row, width, rows);
         int bytes = layout.bytesPerSample();
         int rowBytes = subset.width() * bytes;
@@ -406,7 +494,7 @@ public final class GeoTiffSource implements RasterSource {
                 int from = Math.max(first, s0);
                 int to = Math.min(end, s0 + segment);
                 PredictorUndo.row(raw, base + s0 * bytes, segment, layout.predictor(), info.dataType(),
-                        layout.order(), from - s0, to - from, dst, y * width + from - first);
+                        layout.order(), from - s0, to - from, dst, at + y * width + from - first, decoder);
             }
         }
     }
@@ -453,7 +541,7 @@ public final class GeoTiffSource implements RasterSource {
      * Columns {@code [skipX, skipX+width)} of rows {@code [skipY, skipY+rows)} of band 0 of the raster as float32,
      * undoing Java's lack of signed bytes and unsigned ints.
      */
-    private void copyBand0(Raster raster, int skipX, int skipY, int width, int rows, float[] dst) {
+    private void copyBand0(Raster raster, int skipX, int skipY, int width, int rows, float[] dst, int at) {
         int x0 = raster.getMinX() + skipX;
         int y0 = raster.getMinY() + skipY;
         SampleType type = info.dataType();
@@ -464,7 +552,7 @@ public final class GeoTiffSource implements RasterSource {
                 raster.getSamples(x0, y0 + r, width, 1, 0, row);
                 for (int c = 0; c < width; c++) {
                     int v = row[c];
-                    dst[r * width + c] = switch (type) {
+                    dst[at + r * width + c] = switch (type) {
                         case INT8 -> (byte) v;
                         case UINT32 -> v & 0xFFFFFFFFL;
                         default -> v;
@@ -475,7 +563,7 @@ public final class GeoTiffSource implements RasterSource {
             float[] row = new float[width];
             for (int r = 0; r < rows; r++) {
                 raster.getSamples(x0, y0 + r, width, 1, 0, row);
-                System.arraycopy(row, 0, dst, r * width, width);
+                System.arraycopy(row, 0, dst, at + r * width, width);
             }
         }
     }
@@ -486,11 +574,11 @@ public final class GeoTiffSource implements RasterSource {
      * shorts signed, then the sample type's reinterpretation of ints and bytes.
      */
     private void copyCells(Object cells, int dataType, int stride, int skipX, int skipY, int width, int rows,
-                           float[] dst) {
+                           float[] dst, int at) {
         SampleType type = info.dataType();
         for (int r = 0; r < rows; r++) {
             int from = (skipY + r) * stride + skipX;
-            int to = r * width;
+            int to = at + r * width;
             if (cells instanceof float[] a) {
                 System.arraycopy(a, from, dst, to, width);
             } else if (cells instanceof short[] a) {

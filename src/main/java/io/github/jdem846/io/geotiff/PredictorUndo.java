@@ -1,6 +1,8 @@
 package io.github.jdem846.io.geotiff;
 
 import io.github.jdem846.io.SampleType;
+import io.github.jdem846.io.source.SampleDecoder;
+import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 
 /**
@@ -23,13 +25,14 @@ final class PredictorUndo {
 
     /**
      * Undoes the predictor on the row of {@code samples} samples at {@code raw[off…]} (for predictor 2 only as far
-     * as it is needed), then writes its samples {@code [from, from + n)} as floats to {@code dst[dstOff…]}.
+     * as it is needed), then writes its samples {@code [from, from + n)} as floats to {@code dst[dstOff…]};
+     * without a predictor, {@code decoder} converts them in bulk.
      */
     static void row(byte[] raw, int off, int samples, int predictor, SampleType type, ByteOrder order, int from,
-                    int n, float[] dst, int dstOff) {
+                    int n, float[] dst, int dstOff, SampleDecoder decoder) {
         int bytes = type.bytes();
         if (predictor == 1) {
-            plain(raw, off, type, order == ByteOrder.LITTLE_ENDIAN, from, n, dst, dstOff);
+            decoder.decode(ByteBuffer.wrap(raw, off + from * bytes, n * bytes).order(order), type, dst, dstOff, n);
             return;
         }
         if (predictor == 3) {
@@ -87,32 +90,6 @@ final class PredictorUndo {
                 }
             }
         }
-    }
-
-    /** Samples {@code [from, from + n)} of a row stored without a predictor, in the file's byte order. */
-    private static void plain(byte[] raw, int off, SampleType type, boolean little, int from, int n, float[] dst,
-                              int dstOff) {
-        int bytes = type.bytes();
-        for (int k = 0; k < n; k++) {
-            int at = off + (from + k) * bytes;
-            dst[dstOff + k] = switch (type) {
-                case INT8 -> raw[at];
-                case UINT8 -> raw[at] & 0xFF;
-                case INT16 -> (short) uint16(raw, at, little);
-                case UINT16 -> uint16(raw, at, little);
-                case INT32 -> int32(raw, at, little);
-                case UINT32 -> int32(raw, at, little) & 0xFFFFFFFFL;
-                case FLOAT32 -> Float.intBitsToFloat(int32(raw, at, little));
-                case FLOAT64 -> (float) Double.longBitsToDouble(little
-                        ? (int32(raw, at, true) & 0xFFFFFFFFL) | (long) int32(raw, at + 4, true) << 32
-                        : (long) int32(raw, at, false) << 32 | (int32(raw, at + 4, false) & 0xFFFFFFFFL));
-                default -> throw new IllegalArgumentException("no binary samples of type " + type);
-            };
-        }
-    }
-
-    private static int uint16(byte[] raw, int at, boolean little) {
-        return little ? (raw[at] & 0xFF) | (raw[at + 1] & 0xFF) << 8 : (raw[at] & 0xFF) << 8 | (raw[at + 1] & 0xFF);
     }
 
     private static int int32(byte[] raw, int at, boolean little) {

@@ -64,6 +64,7 @@ public final class BlockReader {
         float nd = NoData.toFloat32(noData);
         boolean hasNoData = !Double.isNaN(noData);
         ValueScale scale = source.valueScale();
+        ValidRange range = new ValidRange(nd, hasNoData, scale);
         float min = Float.POSITIVE_INFINITY;
         float max = Float.NEGATIVE_INFINITY;
         long valid = 0;
@@ -71,6 +72,14 @@ public final class BlockReader {
         for (int r0 = 0; r0 < h; r0 += bandRows) {
             int n = Math.min(bandRows, h - r0);
             source.readRows(window.col(), window.row() + r0, w, n, band);
+            if (d == 1) {
+                for (int r = 0; r < n; r++) {
+                    range.take(band, r * w, (r + 1) * w);
+                    System.arraycopy(band, r * w, out, 0, w);
+                    sink.accept(outRow++, out);
+                }
+                continue;
+            }
             if (hasNoData) {
                 for (int i = 0; i < n * w; i++) {
                     if (band[i] == nd) {
@@ -80,21 +89,6 @@ public final class BlockReader {
             }
             if (!scale.isIdentity()) {
                 scale.apply(band, n * w);
-            }
-            if (d == 1) {
-                for (int i = 0; i < n * w; i++) {
-                    float v = band[i];
-                    if (v == v) {
-                        min = v < min ? v : min;
-                        max = v > max ? v : max;
-                        valid++;
-                    }
-                }
-                for (int r = 0; r < n; r++) {
-                    System.arraycopy(band, r * w, out, 0, w);
-                    sink.accept(outRow++, out);
-                }
-                continue;
             }
             // Bands hold whole blocks (bandRows is a multiple of d), except the last, partial one.
             for (int b0 = 0; b0 < n; b0 += d) {
@@ -124,7 +118,46 @@ public final class BlockReader {
         if (outRow != outH) {
             throw new IllegalStateException("produced " + outRow + " rows, expected " + outH);
         }
-        return ElevationStatistics.ofRange(min, max, valid, (long) w * h);
+        return d == 1 ? range.statistics((long) w * h) : ElevationStatistics.ofRange(min, max, valid, (long) w * h);
+    }
+
+    /** Told of the rows {@link #readInto} has finished. */
+    @FunctionalInterface
+    public interface RowsDone {
+        /** {@code rows} more rows are final. */
+        void add(long rows);
+    }
+
+    /**
+     * What {@link #read} gives at decimation 1, written straight into {@code dst} from {@code at} on (the window's
+     * rows one after the other): the source decodes each band into place ({@link RasterSource#readRows(int, int,
+     * int, int, float[], int)}), where the no-data rule and the value scale are applied and the statistics taken,
+     * with no band buffer and no copies.
+     *
+     * @param noData   the declared no-data value, NaN for none
+     * @param rowsDone told of each row finished
+     * @return min, max and valid count of the window's cells (no-data rule and value scale applied)
+     */
+    public static ElevationStatistics readInto(RasterSource source, Window.Cells window, double noData, float[] dst,
+                                               int at, RowsDone rowsDone) throws IOException {
+        int w = window.width();
+        int h = window.height();
+        if (at < 0 || (long) at + (long) w * h > dst.length) {
+            throw new IllegalArgumentException("a " + w + " × " + h + " window from " + at + " does not fit "
+                    + dst.length + " cells");
+        }
+        int bandRows = bandRows(source.naturalRowBlock(), 1, w, h, source.bandCells());
+        ValidRange range = new ValidRange(NoData.toFloat32(noData), !Double.isNaN(noData), source.valueScale());
+        for (int r0 = 0; r0 < h; r0 += bandRows) {
+            int n = Math.min(bandRows, h - r0);
+            int base = at + r0 * w;
+            source.readRows(window.col(), window.row() + r0, w, n, dst, base);
+            for (int r = 0; r < n; r++) {
+                range.take(dst, base + r * w, base + (r + 1) * w);
+                rowsDone.add(1);
+            }
+        }
+        return range.statistics((long) w * h);
     }
 
     /**

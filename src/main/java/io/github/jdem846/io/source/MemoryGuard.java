@@ -64,17 +64,25 @@ public final class MemoryGuard {
      */
     public static void requireBandFits(Path file, int width, long rows, String advice) throws DemFormatException {
         double cells = (double) width * rows;
-        String what = "reading it takes " + width + " × " + rows + " cells at a time (whole strips or tiles, or"
-                + " the rows of a decimation block), " + human(cells * Float.BYTES) + " as float32";
         if (cells > MAX_ARRAY) {
-            throw new DemFormatException(file, what + ", more than one Java array can hold (" + MAX_ARRAY
-                    + " cells); " + advice);
+            throw new DemFormatException(file, band(width, rows) + ", more than one Java array can hold ("
+                    + MAX_ARRAY + " cells); " + advice);
         }
         long available = available((long) cells * Float.BYTES);
         if ((long) cells * Float.BYTES > available) {
-            throw new DemFormatException(file, what + ", but the Java heap has " + human(Math.max(0, available))
-                    + " free of at most " + human(Runtime.getRuntime().maxMemory()) + "; " + advice);
+            throw new DemFormatException(file, band(width, rows) + ", but the Java heap has "
+                    + human(Math.max(0, available)) + " free of at most " + human(Runtime.getRuntime().maxMemory())
+                    + "; " + advice);
         }
+    }
+
+    /**
+     * What a band buffer takes, for a refusal only: formatting it loads {@link java.util.Formatter} and locale data,
+     * tens of milliseconds on the first read of a JVM.
+     */
+    private static String band(int width, long rows) {
+        return "reading it takes " + width + " × " + rows + " cells at a time (whole strips or tiles, or the rows"
+                + " of a decimation block), " + human((double) width * rows * Float.BYTES) + " as float32";
     }
 
     /**

@@ -26,6 +26,23 @@ public interface RasterSource extends Closeable {
     void readRows(int col, int row, int width, int rows, float[] dst) throws IOException;
 
     /**
+     * {@link #readRows(int, int, int, int, float[])} into {@code dst[at, at + width × rows)}: straight into a
+     * larger grid. This default reads into an array of its own and copies it; formats that can write in place
+     * override it.
+     *
+     * @throws DemFormatException (an IOException) when the data cannot be decoded; the message names the file
+     */
+    default void readRows(int col, int row, int width, int rows, float[] dst, int at) throws IOException {
+        if (at == 0) {
+            readRows(col, row, width, rows, dst);
+            return;
+        }
+        float[] own = new float[Math.multiplyExact(width, rows)];
+        readRows(col, row, width, rows, own);
+        System.arraycopy(own, 0, dst, at, own.length);
+    }
+
+    /**
      * The number of rows the format decodes together (TIFF strip or tile height; 1 for raw rows), so that reads
      * can be aligned to it.
      */

@@ -12,7 +12,8 @@ import java.nio.file.StandardOpenOption;
 
 /**
  * Rows of an uncompressed raster at known file offsets (GridFloat, BIL, SRTM HGT): only the bytes of the
- * requested cells are read, through positional {@link FileChannel} reads.
+ * requested cells are read, through positional {@link FileChannel} reads into a direct buffer of at most 1 MiB,
+ * converted from there in bulk.
  */
 public final class RawRasterSource implements RasterSource {
 
@@ -23,7 +24,8 @@ public final class RawRasterSource implements RasterSource {
     private final long rowStride;
     private final SampleType type;
     private final ByteOrder order;
-    private ByteBuffer buffer = ByteBuffer.allocate(0);
+    private final SampleDecoder decoder = new SampleDecoder();
+    private ByteBuffer buffer = ByteBuffer.allocateDirect(0);
 
     /**
      * @param info      the header information
@@ -53,11 +55,23 @@ public final class RawRasterSource implements RasterSource {
         return info;
     }
 
-    /** Bytes read at once when rows are adjacent in the file; a longer row is read in pieces of this size. */
-    private static final int CHUNK = 1 << 22;
+    /**
+     * Bytes read at once when rows are adjacent in the file; a longer row is read in pieces of this size. Small
+     * enough that the buffer stays in the processor's cache between the read and the conversion.
+     */
+    private static final int CHUNK = 1 << 20;
 
     @Override
     public void readRows(int col, int row, int width, int rows, float[] dst) throws IOException {
+        readRows(col, row, width, rows, dst, 0);
+    }
+
+    /**
+     * Reads the rows into {@code dst} from {@code at} on: each run of bytes is read into a direct buffer (the
+     * file's bytes are copied once, by the read itself) and converted from there in bulk ({@link SampleDecoder}).
+     */
+    @Override
+    public void readRows(int col, int row, int width, int rows, float[] dst, int at) throws IOException {
         int bytes = type.bytes();
         long rowBytes = (long) width * bytes;
         boolean contiguous = col == 0 && width == info.width() && rowStride == rowBytes;
@@ -67,8 +81,8 @@ public final class RawRasterSource implements RasterSource {
             for (int r = 0; r < rows; r++) {
                 for (int c = 0; c < width; c += pieceCells) {
                     int n = Math.min(pieceCells, width - c);
-                    read(offset + (long) (row + r) * rowStride + (long) (col + c) * bytes, n * bytes);
-                    decode(buffer, dst, r * width + c, n);
+                    read(position(row + r, col + c), n * bytes);
+                    decoder.decode(buffer, type, dst, at + r * width + c, n);
                 }
             }
             return;
@@ -77,15 +91,20 @@ public final class RawRasterSource implements RasterSource {
         int rowsPerRead = contiguous ? Math.max(1, Math.min(rows, CHUNK / Math.max(1, (int) rowBytes))) : 1;
         for (int r = 0; r < rows; r += rowsPerRead) {
             int n = Math.min(rowsPerRead, rows - r);
-            read(offset + (long) (row + r) * rowStride + (long) col * bytes, n * (int) rowBytes);
-            decode(buffer, dst, r * width, n * width);
+            read(position(row + r, col), n * (int) rowBytes);
+            decoder.decode(buffer, type, dst, at + r * width, n * width);
         }
+    }
+
+    /** The file offset of cell ({@code col}, {@code row}) of band 1. */
+    private long position(int row, int col) {
+        return offset + (long) row * rowStride + (long) col * type.bytes();
     }
 
     /** Reads {@code length} bytes at {@code position} into {@link #buffer}, flipped for decoding. */
     private void read(long position, int length) throws IOException {
         if (buffer.capacity() < length) {
-            buffer = ByteBuffer.allocate(length);
+            buffer = ByteBuffer.allocateDirect(Math.max(length, Math.min(CHUNK, 2 * buffer.capacity())));
         }
         buffer.clear().limit(length);
         readFully(position);
@@ -104,46 +123,10 @@ public final class RawRasterSource implements RasterSource {
         }
     }
 
-    private void decode(ByteBuffer b, float[] dst, int at, int count) {
-        switch (type) {
-            case FLOAT32 -> b.asFloatBuffer().get(dst, at, count);
-            case INT16 -> {
-                for (int i = 0; i < count; i++) {
-                    dst[at + i] = b.getShort();
-                }
-            }
-            case UINT16 -> {
-                for (int i = 0; i < count; i++) {
-                    dst[at + i] = b.getShort() & 0xFFFF;
-                }
-            }
-            case INT8 -> {
-                for (int i = 0; i < count; i++) {
-                    dst[at + i] = b.get();
-                }
-            }
-            case UINT8 -> {
-                for (int i = 0; i < count; i++) {
-                    dst[at + i] = b.get() & 0xFF;
-                }
-            }
-            case INT32 -> {
-                for (int i = 0; i < count; i++) {
-                    dst[at + i] = b.getInt();
-                }
-            }
-            case UINT32 -> {
-                for (int i = 0; i < count; i++) {
-                    dst[at + i] = b.getInt() & 0xFFFFFFFFL;
-                }
-            }
-            case FLOAT64 -> {
-                for (int i = 0; i < count; i++) {
-                    dst[at + i] = (float) b.getDouble();
-                }
-            }
-            default -> throw new IllegalStateException("raw " + type + " samples are not supported");
-        }
+    /** About one {@link #CHUNK} of float32 cells: a band is read, converted and finished while in the cache. */
+    @Override
+    public long bandCells() {
+        return 1L << 18;
     }
 
     @Override

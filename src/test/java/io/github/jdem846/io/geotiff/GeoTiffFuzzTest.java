@@ -6,6 +6,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Timeout;
 import io.github.jdem846.io.DemReader;
 import io.github.jdem846.io.SampleType;
+import io.github.jdem846.io.source.SampleDecoder;
 import io.github.jdem846.io.source.RasterSource;
 import io.github.jdem846.testing.FuzzInputs;
 import java.io.IOException;
@@ -114,6 +115,6 @@ class GeoTiffFuzzTest {
         byte[] given = in.consumeRemainingAsBytes();
         System.arraycopy(given, 0, raw, 0, Math.min(given.length, raw.length));
         float[] dst = new float[n + 3];
-        PredictorUndo.row(raw, off, samples, predictor, type, order, from, n, dst, 3);
+        PredictorUndo.row(raw, off, samples, predictor, type, order, from, n, dst, 3, new SampleDecoder());
     }
 }
