@@ -205,7 +205,7 @@ final class PngWriter implements BandEncoder {
         int rowBytes = 1 + segments.rowBytes();
         int n = segment.rows() * rowBytes;
         byte[] filtered = new byte[n];
-        new RowFilter(segments.rowBytes(), bytesPerPixel).filter(segment, filtered);
+        new PngRowFilter(segments.rowBytes(), bytesPerPixel).filter(segment, filtered);
         Adler32 adler = new Adler32();
         adler.update(filtered, 0, n);
         if (level == 0 || bytesPerPixel != 1) {
@@ -332,140 +332,6 @@ final class PngWriter implements BandEncoder {
                 chunk(out, "IDAT", buffer, count);
                 count = 0;
             }
-        }
-    }
-
-    /**
-     * PNG filtering of rows (PNG spec 9): each row takes the filter (none, sub, up, average, Paeth) whose output has
-     * the smallest sum of absolute values, the first on ties; none sums the unsigned samples, the others their
-     * signed bytes (PngEncoder's rule, so that its files and ours compress alike).
-     */
-    private static final class RowFilter {
-        private final int bpp;
-        private byte[] prev;
-        private byte[] cur;
-        /** The current row Paeth-filtered, which {@link #choose} keeps (the filter most rows of shading take). */
-        private final byte[] paeth;
-
-        /** @param sampleBytes bytes of a row's samples (without the filter-type byte) */
-        RowFilter(int sampleBytes, int bytesPerPixel) {
-            int n = 1 + sampleBytes;
-            bpp = bytesPerPixel;
-            prev = new byte[n];
-            cur = new byte[n];
-            paeth = new byte[n];
-        }
-
-        /** Filters the rows of {@code segment} into {@code out}, one after another, after the row above it. */
-        void filter(RowChunks.Chunk segment, byte[] out) {
-            segment.rowAbove(prev, 1);
-            int n = cur.length;
-            for (int r = 0; r < segment.rows(); r++) {
-                segment.row(r, cur, 1);
-                apply(choose(), out, r * n);
-                byte[] t = prev;
-                prev = cur;
-                cur = t;
-            }
-        }
-
-        /**
-         * The filter type for the current row: the sums of the five filters' outputs are taken in one pass that
-         * keeps only the Paeth filter's, and only the chosen filter is then written ({@link #apply}).
-         */
-        private int choose() {
-            byte[] c = cur;
-            byte[] p = prev;
-            byte[] t = paeth;
-            long sumNone = 0;
-            long sumSub = 1;
-            long sumUp = 2;
-            long sumAvg = 3;
-            long sumPaeth = 4;
-            int n = c.length;
-            int head = Math.min(n, 1 + bpp);
-            for (int i = 1; i < head; i++) {              // no pixel to the left: a = d = 0
-                int x = c[i] & 0xFF;
-                int b = p[i] & 0xFF;
-                sumNone += x;
-                sumSub += Math.abs((byte) x);
-                sumUp += Math.abs((byte) (x - b));
-                sumAvg += Math.abs((byte) (x - (b >> 1)));
-                t[i] = (byte) (x - b);                      // Paeth of (0, b, 0) is b
-                sumPaeth += Math.abs(t[i]);
-            }
-            for (int i = head; i < n; i++) {
-                int x = c[i] & 0xFF;
-                int b = p[i] & 0xFF;
-                int a = c[i - bpp] & 0xFF;
-                int d = p[i - bpp] & 0xFF;
-                sumNone += x;
-                sumSub += Math.abs((byte) (x - a));
-                sumUp += Math.abs((byte) (x - b));
-                sumAvg += Math.abs((byte) (x - ((a + b) >> 1)));
-                byte e = (byte) (x - paeth(a, b, d));
-                t[i] = e;
-                sumPaeth += Math.abs(e);
-            }
-            int best = 0;
-            long min = sumNone;
-            if (min > sumSub) {
-                best = 1;
-                min = sumSub;
-            }
-            if (min > sumUp) {
-                best = 2;
-                min = sumUp;
-            }
-            if (min > sumAvg) {
-                best = 3;
-                min = sumAvg;
-            }
-            if (min > sumPaeth) {
-                best = 4;
-            }
-            return best;
-        }
-
-        /** Writes the current row filtered with {@code type} (its type byte first) to {@code out} at {@code off}. */
-        private void apply(int type, byte[] out, int off) {
-            byte[] c = cur;
-            byte[] p = prev;
-            int n = c.length;
-            out[off] = (byte) type;
-            int head = Math.min(n, 1 + bpp);
-            switch (type) {
-                case 0 -> System.arraycopy(c, 1, out, off + 1, n - 1);
-                case 1 -> {
-                    System.arraycopy(c, 1, out, off + 1, head - 1);
-                    for (int i = head; i < n; i++) {
-                        out[off + i] = (byte) (c[i] - c[i - bpp]);
-                    }
-                }
-                case 2 -> {
-                    for (int i = 1; i < n; i++) {
-                        out[off + i] = (byte) (c[i] - p[i]);
-                    }
-                }
-                case 3 -> {
-                    for (int i = 1; i < head; i++) {
-                        out[off + i] = (byte) (c[i] - ((p[i] & 0xFF) >> 1));
-                    }
-                    for (int i = head; i < n; i++) {
-                        out[off + i] = (byte) (c[i] - (((c[i - bpp] & 0xFF) + (p[i] & 0xFF)) >> 1));
-                    }
-                }
-                default -> System.arraycopy(paeth, 1, out, off + 1, n - 1);
-            }
-        }
-
-        /** The Paeth predictor (PNG spec 9.4) of left {@code a}, above {@code b}, upper left {@code d}. */
-        private static int paeth(int a, int b, int d) {
-            int q = a + b - d;
-            int pa = Math.abs(q - a);
-            int pb = Math.abs(q - b);
-            int pc = Math.abs(q - d);
-            return pa <= pb && pa <= pc ? a : pb <= pc ? b : d;
         }
     }
 }
