@@ -24,15 +24,15 @@ import java.util.zip.Deflater;
  * file's bytes, depend only on the image and the compression level: the file is the same on one thread or many,
  * for the whole picture given at once or in bands of any size ({@link RowChunks}), on any machine with the same
  * zlib. Memory: the band, at most one segment of rows copied from a band that ends inside it, and one batch of
- * compressed segments. Measured against PngEncoder and ImageIO in docs/performance.md ("PNG encoding").
+ * compressed segments. Measured against PngEncoder and ImageIO in docs/performance.md ("Writing PNG and GeoTIFF").
  *
- * <p>The filter rule is computed exactly, eight bytes at a time in a {@code long} ({@link PngRowFilter}): on the
- * rough 4000² hillshade of docs/performance.md the byte-wise loop with a branching Paeth predictor was the hottest
- * Java method of the whole command, about 3 to 4 times the word-wise filter's time, for the same choices and bytes.
- * Measured and left aside: a branch-free Paeth in the byte-wise loop (1.3 to 1.5 times faster only), and scoring the
- * filters on a quarter of each row then writing only the chosen one (no faster on shading, whose winner, Paeth, is
- * then computed over the whole row anyway; and it changed the filter of 298 of 643 rows of a shadow mask, so the
- * files). Deflate (native zlib) is now most of the time of a gray segment.
+ * <p>The filter rule is computed exactly, eight bytes at a time in a {@code long} ({@link PngRowFilter}): the
+ * byte-wise loop it replaced, with a branching Paeth predictor, was the hottest Java method of {@code hillshade} on
+ * the rough 4000² DEM of docs/performance.md and took about 3 times as long (Java 17 and 25), for the same choices
+ * and bytes. Measured and left aside: a branch-free Paeth in the byte-wise loop (1.3 to 1.5 times faster only), and
+ * scoring the filters on a quarter of each row, then writing only the chosen one (no faster on shading, whose
+ * winner, Paeth, must then be computed over the whole row anyway; and it chose another filter for 298 of 643 rows of
+ * Big Tujunga's shadow mask, so it changed files). Native deflate is now most of the time of a gray segment.
  *
  * <p>Gray segments (hillshades, shadows) are deflated with Huffman coding only ({@link Deflater#HUFFMAN_ONLY}):
  * continuous-tone rows hold few repeated strings after filtering, so string matching costs about 2.5 times the
