@@ -96,7 +96,7 @@ final class PngRowFilter {
         }
         int i = head;
         while (i <= n - 8) {
-            int end = Math.min(n - 8, i + 8 * (WORDS_PER_SUM - 1));
+            int end = n - 8 - i <= 8 * (WORDS_PER_SUM - 1) ? n - 8 : i + 8 * (WORDS_PER_SUM - 1); // no overflow
             long none = 0;
             long sub = 0;
             long up = 0;
