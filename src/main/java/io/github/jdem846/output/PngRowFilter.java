@@ -36,6 +36,8 @@ final class PngRowFilter {
     private byte[] cur;
     /** The current row Paeth-filtered, which {@link #choose} keeps. */
     private final byte[] paeth;
+    /** The five sums of the row being chosen for. */
+    private final long[] sums = new long[5];
 
     /**
      * @param sampleBytes   bytes of a row's samples (without the filter-type byte)
@@ -95,33 +97,22 @@ final class PngRowFilter {
             sumPaeth += Math.abs(t[i]);
         }
         int i = head;
+        long[] s = sums;
+        s[0] = sumNone;
+        s[1] = sumSub;
+        s[2] = sumUp;
+        s[3] = sumAvg;
+        s[4] = sumPaeth;
         while (i <= n - 8) {
             int end = n - 8 - i <= 8 * (WORDS_PER_SUM - 1) ? n - 8 : i + 8 * (WORDS_PER_SUM - 1); // no overflow
-            long none = 0;
-            long sub = 0;
-            long up = 0;
-            long avg = 0;
-            long pae = 0;
-            for (; i <= end; i += 8) {
-                long x = (long) LONGS.get(c, i);
-                long a = (long) LONGS.get(c, i - bpp);
-                long b = (long) LONGS.get(p, i);
-                long d = (long) LONGS.get(p, i - bpp);
-                none += pairs(x);
-                sub += pairs(abs(minus(x, a)));
-                up += pairs(abs(minus(x, b)));
-                avg += pairs(abs(minus(x, average(a, b))));
-                long e = minus(x, paeth4(a & EVEN, b & EVEN, d & EVEN)
-                        | paeth4(a >>> 8 & EVEN, b >>> 8 & EVEN, d >>> 8 & EVEN) << 8);
-                LONGS.set(t, i, e);
-                pae += pairs(abs(e));
-            }
-            sumNone += lanes(none);
-            sumSub += lanes(sub);
-            sumUp += lanes(up);
-            sumAvg += lanes(avg);
-            sumPaeth += lanes(pae);
+            words(c, p, t, bpp, i, end, s);
+            i = end + 8 - (end - i) % 8;
         }
+        sumNone = s[0];
+        sumSub = s[1];
+        sumUp = s[2];
+        sumAvg = s[3];
+        sumPaeth = s[4];
         for (; i < n; i++) {
             int x = c[i] & 0xFF;
             int b = p[i] & 0xFF;
@@ -153,6 +144,38 @@ final class PngRowFilter {
             best = 4;
         }
         return best;
+    }
+
+    /**
+     * The words at {@code from, from + 8, …} up to {@code end} (at most {@link #WORDS_PER_SUM}): adds the five
+     * filters' sums to {@code sums} and writes the Paeth output to {@code t}. A method of its own, called several
+     * times per row, so that the just-in-time compiler takes it up after a few rows of a one-shot command.
+     */
+    private static void words(byte[] c, byte[] p, byte[] t, int bpp, int from, int end, long[] sums) {
+        long none = 0;
+        long sub = 0;
+        long up = 0;
+        long avg = 0;
+        long pae = 0;
+        for (int i = from; i <= end; i += 8) {
+            long x = (long) LONGS.get(c, i);
+            long a = (long) LONGS.get(c, i - bpp);
+            long b = (long) LONGS.get(p, i);
+            long d = (long) LONGS.get(p, i - bpp);
+            none += pairs(x);
+            sub += pairs(abs(minus(x, a)));
+            up += pairs(abs(minus(x, b)));
+            avg += pairs(abs(minus(x, average(a, b))));
+            long e = minus(x, paeth4(a & EVEN, b & EVEN, d & EVEN)
+                    | paeth4(a >>> 8 & EVEN, b >>> 8 & EVEN, d >>> 8 & EVEN) << 8);
+            LONGS.set(t, i, e);
+            pae += pairs(abs(e));
+        }
+        sums[0] += lanes(none);
+        sums[1] += lanes(sub);
+        sums[2] += lanes(up);
+        sums[3] += lanes(avg);
+        sums[4] += lanes(pae);
     }
 
     /** Writes row {@code c} filtered with {@code type} (its type byte first) to {@code out} at {@code off}. */
