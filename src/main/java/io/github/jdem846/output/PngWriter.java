@@ -19,12 +19,21 @@ import java.util.zip.Deflater;
 /**
  * Encodes 8-bit RGBA and 8-bit gray images as PNG, band of rows after band of rows ({@link BandEncoder}): per-row
  * PNG filters chosen as PngEncoder's "predictor encoding" chooses them (the filter with the smallest sum of absolute
- * values), and one zlib stream made of independently compressed segments of whole rows, about
+ * values; {@link PngRowFilter}), and one zlib stream made of independently compressed segments of whole rows, about
  * {@link #SEGMENT_BYTES} each, the segments of a band compressed in parallel when asked. The segments, and so the
  * file's bytes, depend only on the image and the compression level: the file is the same on one thread or many,
  * for the whole picture given at once or in bands of any size ({@link RowChunks}), on any machine with the same
  * zlib. Memory: the band, at most one segment of rows copied from a band that ends inside it, and one batch of
- * compressed segments. Measured against PngEncoder and ImageIO in docs/performance.md ("PNG encoding").
+ * compressed segments. Measured against PngEncoder and ImageIO in docs/performance.md ("Writing PNG and GeoTIFF").
+ *
+ * <p>The filter rule is computed exactly, eight bytes at a time in a {@code long} ({@link PngRowFilter}): the
+ * byte-wise loop it replaced, with a branching Paeth predictor, was the hottest Java method of {@code hillshade} on
+ * the rough 4000² DEM of docs/performance.md and took about 3 times as long (Java 17 and 25), for the same choices
+ * and bytes. Measured and left aside: a branch-free Paeth in the byte-wise loop (1.3 to 1.5 times faster only), and
+ * scoring the filters on a quarter of each row, then writing only the chosen one (no faster on shading, whose
+ * winner, Paeth, must then be computed over the whole row anyway; and it chose another filter for 298 of 643 rows of
+ * Big Tujunga's shadow mask, so it changed files). Native deflate is now most of the time of a gray segment, and in
+ * a one-shot command the filter runs uncompiled for its first rows: there the write phase gained about 10 %.
  *
  * <p>Gray segments (hillshades, shadows) are deflated with Huffman coding only ({@link Deflater#HUFFMAN_ONLY}):
  * continuous-tone rows hold few repeated strings after filtering, so string matching costs about 2.5 times the
@@ -205,7 +214,7 @@ final class PngWriter implements BandEncoder {
         int rowBytes = 1 + segments.rowBytes();
         int n = segment.rows() * rowBytes;
         byte[] filtered = new byte[n];
-        new RowFilter(segments.rowBytes(), bytesPerPixel).filter(segment, filtered);
+        new PngRowFilter(segments.rowBytes(), bytesPerPixel).filter(segment, filtered);
         Adler32 adler = new Adler32();
         adler.update(filtered, 0, n);
         if (level == 0 || bytesPerPixel != 1) {
@@ -332,140 +341,6 @@ final class PngWriter implements BandEncoder {
                 chunk(out, "IDAT", buffer, count);
                 count = 0;
             }
-        }
-    }
-
-    /**
-     * PNG filtering of rows (PNG spec 9): each row takes the filter (none, sub, up, average, Paeth) whose output has
-     * the smallest sum of absolute values, the first on ties; none sums the unsigned samples, the others their
-     * signed bytes (PngEncoder's rule, so that its files and ours compress alike).
-     */
-    private static final class RowFilter {
-        private final int bpp;
-        private byte[] prev;
-        private byte[] cur;
-        /** The current row Paeth-filtered, which {@link #choose} keeps (the filter most rows of shading take). */
-        private final byte[] paeth;
-
-        /** @param sampleBytes bytes of a row's samples (without the filter-type byte) */
-        RowFilter(int sampleBytes, int bytesPerPixel) {
-            int n = 1 + sampleBytes;
-            bpp = bytesPerPixel;
-            prev = new byte[n];
-            cur = new byte[n];
-            paeth = new byte[n];
-        }
-
-        /** Filters the rows of {@code segment} into {@code out}, one after another, after the row above it. */
-        void filter(RowChunks.Chunk segment, byte[] out) {
-            segment.rowAbove(prev, 1);
-            int n = cur.length;
-            for (int r = 0; r < segment.rows(); r++) {
-                segment.row(r, cur, 1);
-                apply(choose(), out, r * n);
-                byte[] t = prev;
-                prev = cur;
-                cur = t;
-            }
-        }
-
-        /**
-         * The filter type for the current row: the sums of the five filters' outputs are taken in one pass that
-         * keeps only the Paeth filter's, and only the chosen filter is then written ({@link #apply}).
-         */
-        private int choose() {
-            byte[] c = cur;
-            byte[] p = prev;
-            byte[] t = paeth;
-            long sumNone = 0;
-            long sumSub = 1;
-            long sumUp = 2;
-            long sumAvg = 3;
-            long sumPaeth = 4;
-            int n = c.length;
-            int head = Math.min(n, 1 + bpp);
-            for (int i = 1; i < head; i++) {              // no pixel to the left: a = d = 0
-                int x = c[i] & 0xFF;
-                int b = p[i] & 0xFF;
-                sumNone += x;
-                sumSub += Math.abs((byte) x);
-                sumUp += Math.abs((byte) (x - b));
-                sumAvg += Math.abs((byte) (x - (b >> 1)));
-                t[i] = (byte) (x - b);                      // Paeth of (0, b, 0) is b
-                sumPaeth += Math.abs(t[i]);
-            }
-            for (int i = head; i < n; i++) {
-                int x = c[i] & 0xFF;
-                int b = p[i] & 0xFF;
-                int a = c[i - bpp] & 0xFF;
-                int d = p[i - bpp] & 0xFF;
-                sumNone += x;
-                sumSub += Math.abs((byte) (x - a));
-                sumUp += Math.abs((byte) (x - b));
-                sumAvg += Math.abs((byte) (x - ((a + b) >> 1)));
-                byte e = (byte) (x - paeth(a, b, d));
-                t[i] = e;
-                sumPaeth += Math.abs(e);
-            }
-            int best = 0;
-            long min = sumNone;
-            if (min > sumSub) {
-                best = 1;
-                min = sumSub;
-            }
-            if (min > sumUp) {
-                best = 2;
-                min = sumUp;
-            }
-            if (min > sumAvg) {
-                best = 3;
-                min = sumAvg;
-            }
-            if (min > sumPaeth) {
-                best = 4;
-            }
-            return best;
-        }
-
-        /** Writes the current row filtered with {@code type} (its type byte first) to {@code out} at {@code off}. */
-        private void apply(int type, byte[] out, int off) {
-            byte[] c = cur;
-            byte[] p = prev;
-            int n = c.length;
-            out[off] = (byte) type;
-            int head = Math.min(n, 1 + bpp);
-            switch (type) {
-                case 0 -> System.arraycopy(c, 1, out, off + 1, n - 1);
-                case 1 -> {
-                    System.arraycopy(c, 1, out, off + 1, head - 1);
-                    for (int i = head; i < n; i++) {
-                        out[off + i] = (byte) (c[i] - c[i - bpp]);
-                    }
-                }
-                case 2 -> {
-                    for (int i = 1; i < n; i++) {
-                        out[off + i] = (byte) (c[i] - p[i]);
-                    }
-                }
-                case 3 -> {
-                    for (int i = 1; i < head; i++) {
-                        out[off + i] = (byte) (c[i] - ((p[i] & 0xFF) >> 1));
-                    }
-                    for (int i = head; i < n; i++) {
-                        out[off + i] = (byte) (c[i] - (((c[i - bpp] & 0xFF) + (p[i] & 0xFF)) >> 1));
-                    }
-                }
-                default -> System.arraycopy(paeth, 1, out, off + 1, n - 1);
-            }
-        }
-
-        /** The Paeth predictor (PNG spec 9.4) of left {@code a}, above {@code b}, upper left {@code d}. */
-        private static int paeth(int a, int b, int d) {
-            int q = a + b - d;
-            int pa = Math.abs(q - a);
-            int pb = Math.abs(q - b);
-            int pc = Math.abs(q - d);
-            return pa <= pb && pa <= pc ? a : pb <= pc ? b : d;
         }
     }
 }
