@@ -1,7 +1,7 @@
 @echo off
 rem jdem846 launcher for Windows: runs lib\jdem846-cli.jar. With JAVA_HOME set to a JDK 19 or later, the JVM keeps an
-rem application class-data archive in %LOCALAPPDATA%\jdem846 for faster starts (bin/jdem846 does so on JDK 19 to 24;
-rem the training run of JDK 25 and the choice of JIT are not done here); otherwise it starts as java -jar does.
+rem application class-data archive in %LOCALAPPDATA%\jdem846 for faster starts (as bin/jdem846 does; its choice of
+rem JIT for small jobs is not made here); otherwise it starts as java -jar does.
 rem Environment: JAVA_HOME (else java on the PATH), JDEM846_OPTS (extra JVM options, e.g. -Xmx8g), JDEM846_CDS=off
 rem (no archive).
 setlocal

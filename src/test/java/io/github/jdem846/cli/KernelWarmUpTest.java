@@ -9,9 +9,21 @@ import java.nio.file.Path;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 class KernelWarmUpTest {
+
+    @BeforeEach
+    void warmUpsOn() {
+        System.setProperty(WarmUpThread.PROPERTY, "on");
+    }
+
+    @AfterEach
+    void warmUpsAsBefore() {
+        System.clearProperty(WarmUpThread.PROPERTY);
+    }
 
     @Test
     void runsTheStageOnASmallRealisticGridUntilStopped() throws Exception {

@@ -34,8 +34,8 @@ class WarmUpMemoryTest {
         Path tif = SingleStripTiff.write(tmp.resolve("strip.tif"), 6000);   // 72 MB decoded, a 48 MB heap
         Path png = tmp.resolve("hs.png");
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Process p = new ProcessBuilder(List.of(java, "-Xmx48m", "-cp", TestJvm.classPath(),
-                Main.class.getName(), "hillshade", tif.toString(), "-q", "-o", png.toString()))
+        Process p = new ProcessBuilder(List.of(java, "-Xmx48m", "-D" + WarmUpThread.PROPERTY + "=on", "-cp",
+                TestJvm.classPath(), Main.class.getName(), "hillshade", tif.toString(), "-q", "-o", png.toString()))
                 .redirectErrorStream(true).start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
         assertTrue(p.waitFor(60, TimeUnit.SECONDS), "finished");

@@ -18,18 +18,18 @@ class WarmUpThreadTest {
     }
 
     @Test
-    void startsADaemonThreadUnlessTheWarmUpsAreOff() {
-        assertTrue(WarmUpThread.enabled(), "on by default");
-        WarmUpThread.start("warm-up-test-on", this::waitForRelease);
-        assertTrue(alive("warm-up-test-on"), "a warm-up thread while its work waits");
-
-        System.setProperty(WarmUpThread.PROPERTY, "off");
-        assertFalse(WarmUpThread.enabled());
-        WarmUpThread.start("warm-up-test-off", this::waitForRelease);
-        assertFalse(alive("warm-up-test-off"), "-Djdem846.warmUp=off starts no thread");
+    void startsADaemonThreadOnlyWhenTheWarmUpsAreOn() {
+        assertFalse(WarmUpThread.enabled(), "off by default");
+        WarmUpThread.start("warm-up-test-default", this::waitForRelease);
+        assertFalse(alive("warm-up-test-default"), "no thread by default");
 
         System.setProperty(WarmUpThread.PROPERTY, "on");
-        assertTrue(WarmUpThread.enabled(), "any other value leaves them on");
+        assertTrue(WarmUpThread.enabled());
+        WarmUpThread.start("warm-up-test-on", this::waitForRelease);
+        assertTrue(alive("warm-up-test-on"), "-Djdem846.warmUp=on: a warm-up thread while its work waits");
+
+        System.setProperty(WarmUpThread.PROPERTY, "off");
+        assertFalse(WarmUpThread.enabled(), "any other value leaves them off");
     }
 
     private void waitForRelease() {
