@@ -20,7 +20,7 @@ import java.util.Optional;
  * nothing is done. When the command will need latitude/longitude ({@link #needsLatLon}), the file's CRS is also
  * resolved by SIS here. For a grid of 16 to 256 MiB that the command reads whole, the heap memory it will take is
  * also mapped ahead ({@link #touchGridMemory}). Any failure here is ignored: the command reads the file again and
- * reports its own errors.
+ * reports its own errors. Runs only with {@code -Djdem846.warmUp=on} ({@link WarmUpThread}).
  */
 final class InputWarmUp {
 

@@ -16,6 +16,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * start interpreted on the full grid: docs/performance.md, "Whole commands vs gdaldem"). The synthetic grid is of
  * the input's kind, lat/lon or projected, since some stages take another loop on each (the sweep's step length per
  * row). The warm-up stops at {@link #stop()} or after its budget, whichever comes first; any failure is ignored.
+ * Runs only with {@code -Djdem846.warmUp=on} ({@link WarmUpThread}).
  */
 final class KernelWarmUp {
 
