@@ -41,7 +41,7 @@ import javax.imageio.stream.ImageInputStream;
  * are read through full-width source regions in large bands.
  *
  * <p>Longer than the other classes: it is the one place that maps a read request onto TIFF
- *  strips or tiles (TiffSubset, TiffBlocks, PredictorUndo and DecodeTarget do the decoding); the direct path for
+ * strips or tiles (TiffSubset, TiffBlocks, PredictorUndo and DecodeTarget do the decoding); the direct path for
  * uncompressed blocks sits beside the decoded one so that both share the block walk.
  */
 public final class GeoTiffSource implements RasterSource {
