@@ -3,6 +3,7 @@ package io.github.jdem846;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -20,7 +21,8 @@ import org.junit.jupiter.api.io.TempDir;
  * The distribution's launcher, {@code bin/jdem846} of the unpacked {@code jdem846-<version>-dist.zip}, on the JDK
  * that runs the tests (its {@code JAVA_HOME}): it runs {@code lib/jdem846-cli.jar} and, on JDK 19 and later, makes
  * a class-data archive in {@code $XDG_CACHE_HOME/jdem846} on the first command that does work and loads the CLI's
- * classes from it after; small jobs run with the first-tier JIT only.
+ * classes from it after (on JDK 25 and later an ahead-of-time cache per command, recorded on the command's first
+ * run); small jobs run with the first-tier JIT only.
  */
 class LauncherIT {
 
@@ -47,47 +49,92 @@ class LauncherIT {
     void theFirstCommandMakesTheArchiveAndTheNextLoadsTheCliFromIt(@TempDir Path cache) throws Exception {
         Run first = launch(cache, Map.of(), "info", "--json");
         assertEquals(0, first.status(), first.out());
-        // stdout is the JSON alone: no class-data sharing message
+        // stdout is the JSON alone: no class-data sharing or recording message
         String json = first.out().strip();
         assertTrue(json.startsWith("{\"file\": \"bundled sample ") && json.endsWith("}") && json.lines().count() == 1,
                 json);
 
-        List<Path> made = archives(cache);
         int feature = Runtime.version().feature();
+        List<Path> made = feature >= 25 ? awaitCache(cache, "info") : archives(cache);
         if (feature < 19) {
             assertEquals(List.of(), made, "JDK 17 and 18 start with the JDK's own archive only");
             return;
         }
         assertEquals(1, made.size(), made.toString());
-        assertTrue(made.get(0).getFileName().toString().startsWith("jdem846-" + feature + "-"), made.toString());
-        assertTrue(Files.size(made.get(0)) > 100_000, "an archive of the classes loaded");
+        String name = made.get(0).getFileName().toString();
+        assertTrue(name.startsWith("jdem846-" + feature + "-"), name);
+        assertTrue(feature >= 25 ? name.endsWith("-info.aot") : name.endsWith(".jsa"),
+                "JDK 25 and later: an ahead-of-time cache for the command; before: a class-data archive: " + name);
+        assertTrue(Files.size(made.get(0)) > 100_000, "a cache of the classes loaded");
 
         Run next = launch(cache, Map.of("JDEM846_OPTS", "-Xlog:class+load=info"), "info", "--json");
         assertEquals(0, next.status(), next.out());
-        assertTrue(next.out().lines().anyMatch(l -> l.endsWith(" io.github.jdem846.cli.Main source: shared objects"
-                + " file (top)")), next.out().lines().filter(l -> l.contains("cli.Main")).toList().toString());
-        assertEquals(made, archives(cache), "the same archive, used");
+        String shared = " io.github.jdem846.cli.Main source: shared objects file" + (feature >= 25 ? "" : " (top)");
+        assertTrue(next.out().lines().anyMatch(l -> l.endsWith(shared)),
+                next.out().lines().filter(l -> l.contains("cli.Main")).toList().toString());
+        assertEquals(made, archives(cache), "the same cache, used");
+    }
+
+    @Test
+    void eachCommandGetsItsOwnAheadOfTimeCacheOnJdk25(@TempDir Path cache) throws Exception {
+        assumeTrue(Runtime.version().feature() >= 25, "ahead-of-time caches need JDK 25");
+        assertEquals(0, launch(cache, Map.of(), "info").status());
+        awaitCache(cache, "info");
+        Run sun = launch(cache, Map.of(), "sun", "--at", "34.3,-118.1", "--time", "2026-06-21T12:00Z");
+        assertEquals(0, sun.status(), sun.out());
+        List<Path> made = awaitCache(cache, "sun");
+        assertEquals(2, made.size(), made.toString());
+        assertTrue(made.stream().anyMatch(f -> f.getFileName().toString().endsWith("-info.aot")), made.toString());
+    }
+
+    @Test
+    void aFailedFirstRunMakesNoCacheAndKeepsItsExitStatus(@TempDir Path cache) throws Exception {
+        Run run = launch(cache, Map.of(), "info", cache.resolve("missing.flt").toString());
+        assertEquals(1, run.status(), run.out());
+        assertTrue(run.out().contains("missing.flt"), run.out());
+        assertEquals(List.of(), leftOver(cache).stream().filter(f -> f.toString().contains(".aot")).toList(),
+                "no ahead-of-time cache and no lock after a failed run");
+    }
+
+    @Test
+    void whileAnotherRunRecordsTheCommandRunsWithTheClassDataArchive(@TempDir Path cache) throws Exception {
+        assumeTrue(Runtime.version().feature() >= 25, "ahead-of-time caches need JDK 25");
+        assertEquals(0, launch(cache, Map.of(), "info").status());
+        Path infoCache = awaitCache(cache, "info").get(0);
+        Path lock = Files.createDirectory(Path.of(infoCache.toString().replace("-info.aot", "-sun.aot.lock")));
+
+        Run sun = launch(cache, Map.of(), "sun", "--at", "34.3,-118.1", "--time", "2026-06-21T12:00Z");
+        assertEquals(0, sun.status(), sun.out());
+        List<Path> left = archives(cache);
+        assertTrue(left.stream().anyMatch(f -> f.toString().endsWith(".jsa")), "the class-data archive: " + left);
+        assertFalse(left.stream().anyMatch(f -> f.toString().endsWith("-sun.aot")), "no recording: " + left);
+        assertTrue(Files.isDirectory(lock), "the other run's lock is left alone");
     }
 
     @Test
     void aNewArchiveDropsArchivesUnusedFor30Days(@TempDir Path cache) throws Exception {
         Path dir = Files.createDirectories(cache.resolve("jdem846"));
         Path stale = Files.write(dir.resolve("jdem846-21-111.jsa"), new byte[16]);
+        Path staleAot = Files.write(dir.resolve("jdem846-25-111-render.aot"), new byte[16]);
         Path recent = Files.write(dir.resolve("jdem846-21-222.jsa"), new byte[16]);
         long day = TimeUnit.DAYS.toMillis(1);
-        Files.setLastModifiedTime(stale, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis()
-                - 40 * day));
+        for (Path old : List.of(stale, staleAot)) {
+            Files.setLastModifiedTime(old, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis()
+                    - 40 * day));
+        }
         Files.setLastModifiedTime(recent, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis()
                 - 2 * day));
 
         Run run = launch(cache, Map.of(), "info", "--json");
         assertEquals(0, run.status(), run.out());
-        List<Path> left = archives(cache);
-        if (Runtime.version().feature() < 19) {
-            assertEquals(List.of(recent, stale).stream().sorted().toList(), left, "no archive work on JDK 17 and 18");
+        int feature = Runtime.version().feature();
+        List<Path> left = feature >= 25 ? awaitCache(cache, "info") : archives(cache);
+        if (feature < 19) {
+            assertEquals(List.of(recent, stale, staleAot).stream().sorted().toList(), left,
+                    "no archive work on JDK 17 and 18");
             return;
         }
-        assertFalse(left.contains(stale), "an archive 40 days old is deleted: " + left);
+        assertFalse(left.contains(stale) || left.contains(staleAot), "caches 40 days old are deleted: " + left);
         assertTrue(left.contains(recent), "one 2 days old stays: " + left);
         assertEquals(2, left.size(), "and the new one is made: " + left);
     }
@@ -138,13 +185,41 @@ class LauncherIT {
         return new Run(p.exitValue(), out);
     }
 
+    /** The class-data archives and ahead-of-time caches made. */
     private static List<Path> archives(Path cache) throws IOException {
+        return leftOver(cache).stream().filter(f -> f.toString().endsWith(".jsa") || f.toString().endsWith(".aot"))
+                .toList();
+    }
+
+    /** Everything in the launcher's cache folder. */
+    private static List<Path> leftOver(Path cache) throws IOException {
         Path dir = cache.resolve("jdem846");
         if (!Files.isDirectory(dir)) {
             return List.of();
         }
         try (Stream<Path> files = Files.list(dir)) {
-            return files.filter(f -> f.toString().endsWith(".jsa")).sorted().toList();
+            return files.sorted().toList();
         }
+    }
+
+    /**
+     * Waits for the ahead-of-time cache of the command, which a background JVM makes after the command's first run,
+     * and for that run's lock to go; then returns the caches and archives made.
+     */
+    private static List<Path> awaitCache(Path cache, String command) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+        while (System.nanoTime() < deadline) {
+            List<Path> files = leftOver(cache);
+            boolean made = files.stream().anyMatch(f -> f.toString().endsWith("-" + command + ".aot"));
+            boolean locked = files.stream().anyMatch(f -> f.toString().endsWith("-" + command + ".aot.lock"));
+            if (made && !locked) {
+                return archives(cache);
+            }
+            if (!locked) {
+                throw new AssertionError("no cache made and no recording under way: " + files);
+            }
+            Thread.sleep(100);
+        }
+        throw new AssertionError("the cache of " + command + " was not made in 120 s: " + leftOver(cache));
     }
 }
