@@ -1,7 +1,8 @@
 @echo off
 rem jdem846 launcher for Windows: runs lib\jdem846-cli.jar. With JAVA_HOME set to a JDK 19 or later, the JVM keeps an
-rem application class-data archive in %LOCALAPPDATA%\jdem846 for faster starts (as bin/jdem846 does; its choice of
-rem JIT for small jobs is not made here); otherwise it starts as java -jar does.
+rem application class-data archive in %LOCALAPPDATA%\jdem846 for faster starts (as bin/jdem846 does on JDK 19 to 24;
+rem its ahead-of-time caches per command on JDK 25 and its choice of JIT for small jobs are not made here); otherwise
+rem it starts as java -jar does.
 rem Environment: JAVA_HOME (else java on the PATH), JDEM846_OPTS (extra JVM options, e.g. -Xmx8g), JDEM846_CDS=off
 rem (no archive).
 setlocal
