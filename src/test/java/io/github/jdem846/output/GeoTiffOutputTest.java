@@ -250,6 +250,48 @@ class GeoTiffOutputTest {
         assertEquals("7", TiffTags.read(file).text(GDAL_NODATA));
     }
 
+    /**
+     * Each strip is one zlib stream whose header says the fastest level (RFC 1950 FLEVEL 0, what zlib writes for level
+     * 1; its default, 6, writes 2) and that inflates to the strip's rows with the predictor undone.
+     */
+    @Test
+    void stripsAreZlibStreamsOfTheFastestLevel() throws Exception {
+        int w = 300;
+        int h = 700;
+        byte[] gray = new byte[w * h];
+        Random random = new Random(5);
+        for (int i = 0; i < gray.length; i++) {
+            gray[i] = (byte) (i % w < 150 ? 0 : 255 - random.nextInt(3)); // a mask-like half and a noisy half
+        }
+        Path file = dir.resolve("level.tif");
+        ImageOutput.writeGray(file, gray, w, h, null, WriteOptions.defaults());
+        byte[] all = java.nio.file.Files.readAllBytes(file);
+        TiffTags tags = TiffTags.read(file);
+        double[] offsets = tags.numbers(273);
+        double[] counts = tags.numbers(279);
+        int rowsPerStrip = (int) tags.numbers(278)[0];
+        assertTrue(offsets.length > 1, "several strips");
+        for (int s = 0; s < offsets.length; s++) {
+            int at = (int) offsets[s];
+            assertEquals(0x78, all[at] & 0xFF, "strip " + s + ": deflate, 32 KiB window");
+            assertEquals(0, (all[at + 1] & 0xFF) >> 6, "strip " + s + ": FLEVEL of the fastest level");
+            java.util.zip.Inflater inflater = new java.util.zip.Inflater();
+            inflater.setInput(all, at, (int) counts[s]);
+            int rows = Math.min(rowsPerStrip, h - s * rowsPerStrip);
+            byte[] strip = new byte[rows * w];
+            assertEquals(strip.length, inflater.inflate(strip));
+            assertTrue(inflater.finished(), "strip " + s + " is one whole stream");
+            inflater.end();
+            for (int r = 0; r < rows; r++) {
+                for (int x = 1; x < w; x++) { // undo the horizontal predictor
+                    strip[r * w + x] += strip[r * w + x - 1];
+                }
+            }
+            assertArrayEquals(java.util.Arrays.copyOfRange(gray, s * rowsPerStrip * w, s * rowsPerStrip * w
+                    + strip.length), strip, "strip " + s);
+        }
+    }
+
     @Test
     void noDataTextIsWhatGdalParses() {
         assertEquals("0", GeoTiffTags.noDataText(0));
