@@ -157,13 +157,28 @@ class LauncherIT {
         assertEquals(4, tier(cache, "shadows", "--algorithm=march", dem.toString(), "-o", out.toString()));
         assertEquals(4, tier(cache, "skyview", dem.toString(), "-o", out.toString()));
         assertEquals(4, tier(cache, "hillshade", cache.toString(), "-o", out.toString()), "a folder: a mosaic");
-        Path big = cache.resolve("big.flt");
-        try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(big.toFile(), "rw")) {
-            f.setLength(17L << 20);
-        }
-        assertEquals(4, tier(cache, "hillshade", big.toString(), "-o", out.toString()), "17 MiB of input");
-        assertEquals(1, tier(cache, "hillshade", dem.toString(), "-o", big.toString()),
+        Path big = sparseFile(cache.resolve("big.flt"), 17L << 20);
+        assertEquals(processors() <= 2 ? 1 : 4, tier(cache, "hillshade", big.toString(), "-o", out.toString()),
+                "17 MiB of input: little work with one or two processors only");
+        Path huge = sparseFile(cache.resolve("huge.flt"), 257L << 20);
+        assertEquals(4, tier(cache, "hillshade", huge.toString(), "-o", out.toString()), "257 MiB of input");
+        assertEquals(1, tier(cache, "hillshade", dem.toString(), "-o", huge.toString()),
                 "an existing output file is not input");
+    }
+
+    private static Path sparseFile(Path file, long length) throws IOException {
+        try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(file.toFile(), "rw")) {
+            f.setLength(length);
+        }
+        return file;
+    }
+
+    /** The processors the launcher sees ({@code getconf _NPROCESSORS_ONLN}). */
+    private static int processors() throws Exception {
+        Process p = new ProcessBuilder("getconf", "_NPROCESSORS_ONLN").redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
+        assertTrue(p.waitFor(30, TimeUnit.SECONDS), "getconf finished");
+        return Integer.parseInt(out);
     }
 
     /** The JIT's highest tier the launcher chose for a command (which may fail: only the JVM's flags count). */
