@@ -263,10 +263,7 @@ public final class Renderer {
         byte[] out = new byte[width * area.height()];
         illuminateTiles(dem, method.stage(options), light, area, progress, (c0, r0, w, h, tile) -> {
             for (int r = 0; r < h; r++) {
-                int o = (r0 + r) * width + c0;
-                for (int c = 0; c < w; c++) {
-                    out[o + c] = (byte) method.gray(tile[r * w + c], options);
-                }
+                method.toGray(tile, r * w, out, (r0 + r) * width + c0, w, options);
             }
         });
         return out;

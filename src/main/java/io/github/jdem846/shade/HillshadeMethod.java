@@ -2,6 +2,7 @@ package io.github.jdem846.shade;
 
 import io.github.jdem846.internal.Brightness;
 import io.github.jdem846.internal.Clamp;
+import io.github.jdem846.internal.Rounding;
 import java.util.Objects;
 
 /**
@@ -40,7 +41,25 @@ public enum HillshadeMethod {
                 t = Brightness.spot(t, options.spotExponent());
             }
             final double channel = Clamp.between(0.5 + 0.5 * Clamp.between(t, -1.0, 1.0), 0.0, 1.0);
-            return 1 + (int) Math.rint(254.0 * channel);
+            return 1 + (int) Rounding.halfEven(254.0 * channel);
+        }
+
+        /** {@link #gray} written out in the loop, with the intensities read once. */
+        @Override
+        public void toGray(float[] illumination, int from, byte[] out, int to, int n, HillshadeOptions options) {
+            if (options.spotExponent() != 1.0) {
+                super.toGray(illumination, from, out, to, n, options);
+                return;
+            }
+            final long light = Double.doubleToRawLongBits(options.relativeLightIntensity());
+            final long dark = Double.doubleToRawLongBits(options.relativeDarkIntensity());
+            for (int i = 0; i < n; i++) {
+                final float v = illumination[from + i];
+                final long negative = Float.floatToRawIntBits(v) >> 31;
+                final double t = v * Double.longBitsToDouble(light ^ ((light ^ dark) & negative));
+                final double channel = Clamp.between(0.5 + 0.5 * Clamp.between(t, -1.0, 1.0), 0.0, 1.0);
+                out[to + i] = (byte) (v != v ? 0 : 1 + (int) Rounding.halfEven(254.0 * channel));
+            }
         }
     },
 
@@ -65,7 +84,19 @@ public enum HillshadeMethod {
             // bit, HillshadeMethodTest).
             final int bits = Float.floatToRawIntBits(illumination);
             final float lit = Float.intBitsToFloat(bits & ~(bits >> 31));
-            return lit >= 1f ? 255 : (int) Math.rint((float) (1.0 + 254.0 * lit));
+            return lit >= 1f ? 255 : (int) Rounding.halfEven((float) (1.0 + 254.0 * lit));
+        }
+
+        /** {@link #gray} written out in the loop. */
+        @Override
+        public void toGray(float[] illumination, int from, byte[] out, int to, int n, HillshadeOptions options) {
+            for (int i = 0; i < n; i++) {
+                final float v = illumination[from + i];
+                final int bits = Float.floatToRawIntBits(v);
+                final float lit = Float.intBitsToFloat(bits & ~(bits >> 31));
+                final int gray = lit >= 1f ? 255 : (int) Rounding.halfEven((float) (1.0 + 254.0 * lit));
+                out[to + i] = (byte) (v != v ? 0 : gray);
+            }
         }
     },
 
@@ -158,15 +189,31 @@ public enum HillshadeMethod {
         Objects.requireNonNull(illumination, "illumination");
         Objects.requireNonNull(options, "options");
         byte[] out = new byte[illumination.length];
-        for (int i = 0; i < out.length; i++) {
-            out[i] = (byte) gray(illumination[i], options);
-        }
+        toGray(illumination, 0, out, 0, out.length, options);
         return out;
+    }
+
+    /**
+     * The gray bytes of {@code n} illumination values: {@code out[to + i] = (byte) gray(illumination[from + i])}.
+     * Horn and jdem846 write their conversion out in the loop: the first-tier JIT, which the launcher chooses for
+     * small jobs, does not inline a call through this enum, a tenth of a Horn hillshade's time on 16 million cells.
+     *
+     * @param illumination the illumination as this method's stage writes it; NaN for no-data
+     * @param from the first value to convert
+     * @param out receives the gray bytes
+     * @param to where in {@code out} the first byte goes
+     * @param n how many values to convert
+     * @param options the options the illumination was computed with
+     */
+    public void toGray(float[] illumination, int from, byte[] out, int to, int n, HillshadeOptions options) {
+        for (int i = 0; i < n; i++) {
+            out[to + i] = (byte) gray(illumination[from + i], options);
+        }
     }
 
     /** GDAL's float → byte store: the value as float32, clamped to 0 … 255, rounded to nearest (ties to even). */
     static int toByte(double value) {
         float f = (float) value;
-        return (int) Math.rint(Clamp.between(f, 0f, 255f));
+        return (int) Rounding.halfEven(Clamp.between(f, 0f, 255f));
     }
 }
