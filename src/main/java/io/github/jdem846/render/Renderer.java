@@ -138,13 +138,16 @@ public final class Renderer {
         int demWidth = dem.width();
         boolean covered = dem.hasCoverage();
         int[] drape = drape(dem, scene, area);
+        TileBuffers buffers = new TileBuffers();
         new TileExecutor(pool, settings.tileSize()).forEachTile(width, height, RenderProgress.SHADING, progress,
                 (c0, r0, w, h) -> {
-                    float[] dot = new float[w * h];
+                    float[] dot = buffers.take(w * h);
                     if (illumination != null) {
                         illuminate(dem, illumination, light, area.col() + c0, area.row() + r0, w, h, dot);
                     } else if (levelGround) {
                         levelGround(light, area.col() + c0, area.row() + r0, w, h, dot);
+                    } else {
+                        java.util.Arrays.fill(dot, 0, w * h, 0f);
                     }
                     for (int r = 0; r < h; r++) {
                         int out = (r0 + r) * width + c0;
@@ -160,6 +163,7 @@ public final class Renderer {
                                     area.row() + r0 + r)) : pixel;
                         }
                     }
+                    buffers.give(dot);
                 });
         return new RenderedRelief(width, height, argb,
                 dem.geometry().window(area.col(), area.row(), width, height));
@@ -269,7 +273,10 @@ public final class Renderer {
         return out;
     }
 
-    /** Receives the illumination of one tile ({@code w × h}, at ({@code c0}, {@code r0}) of the area). */
+    /**
+     * Receives the illumination of one tile ({@code w × h}, at ({@code c0}, {@code r0}) of the area), in an array
+     * that later tiles reuse once this returns.
+     */
     @FunctionalInterface
     private interface IlluminatedTile {
         void accept(int c0, int r0, int w, int h, float[] tile);
@@ -279,13 +286,15 @@ public final class Renderer {
     private void illuminateTiles(Dem dem, IlluminationStage stage, LightField light, CellWindow area,
                                  RenderProgress progress, IlluminatedTile sink) throws InterruptedException {
         requireInside(area, dem);
+        TileBuffers buffers = new TileBuffers();
         try (WorkerPool workers = WorkerPool.of(settings)) {
             new TileExecutor(workers.pool, settings.tileSize()).forEachTile(area.width(), area.height(),
                     RenderProgress.HILLSHADE,
                     progress, (c0, r0, w, h) -> {
-                        float[] tile = new float[w * h];
+                        float[] tile = buffers.take(w * h);
                         illuminate(dem, stage, light, area.col() + c0, area.row() + r0, w, h, tile);
                         sink.accept(c0, r0, w, h, tile);
+                        buffers.give(tile);
                     });
         }
     }
