@@ -164,6 +164,8 @@ class LauncherIT {
         assertEquals(4, tier(cache, "hillshade", huge.toString(), "-o", out.toString()), "257 MiB of input");
         assertEquals(1, tier(cache, "hillshade", dem.toString(), "-o", huge.toString()),
                 "an existing output file is not input");
+        assertEquals(4, tierWithOptions(cache, "-XX:TieredStopAtLevel=4", "hillshade", dem.toString(), "-o", out.toString()),
+                "JDEM846_OPTS chooses the compiler");
     }
 
     private static Path sparseFile(Path file, long length) throws IOException {
@@ -181,12 +183,25 @@ class LauncherIT {
         return Integer.parseInt(out);
     }
 
-    /** The JIT's highest tier the launcher chose for a command (which may fail: only the JVM's flags count). */
+    /**
+     * The JIT's highest tier the launcher chose for a command (which may fail: only the JVM's flags count), checking
+     * that the first tier comes with the hillshade kernels' fused loops ({@code -Djdem846.kernels=fused}) and the
+     * optimising compiler without.
+     */
     private static int tier(Path cache, String... args) throws Exception {
-        Run run = launch(cache, Map.of("JDEM846_CDS", "off", "JDEM846_OPTS", "-XX:+PrintFlagsFinal"), args);
+        return tierWithOptions(cache, "", args);
+    }
+
+    /** {@link #tier} with {@code opts} in JDEM846_OPTS. */
+    private static int tierWithOptions(Path cache, String opts, String... args) throws Exception {
+        Run run = launch(cache, Map.of("JDEM846_CDS", "off", "JDEM846_OPTS",
+                "-XX:+PrintFlagsFinal -XshowSettings:properties " + opts), args);
         String line = run.out().lines().filter(l -> l.matches("\\s*intx TieredStopAtLevel\\s*=.*")).findFirst()
                 .orElseThrow(() -> new AssertionError(run.out()));
-        return Integer.parseInt(line.replaceAll(".*=\\s*(\\d+).*", "$1"));
+        int tier = Integer.parseInt(line.replaceAll(".*=\\s*(\\d+).*", "$1"));
+        boolean fused = run.out().lines().anyMatch(l -> l.strip().equals("jdem846.kernels = fused"));
+        assertEquals(tier == 1, fused, "fused kernels with the first tier only: " + String.join(" ", args));
+        return tier;
     }
 
     private record Run(int status, String out) {

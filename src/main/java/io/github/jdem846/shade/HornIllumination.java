@@ -28,9 +28,16 @@ import java.util.Objects;
 final class HornIllumination implements IlluminationStage {
 
     private final HillshadeOptions options;
+    private final KernelShape shape;
 
     public HornIllumination(HillshadeOptions options) {
+        this(options, KernelShape.CHOSEN);
+    }
+
+    /** With the row kernels' loops in {@code shape} (the same floats either way). */
+    HornIllumination(HillshadeOptions options, KernelShape shape) {
         this.options = Objects.requireNonNull(options, "options");
+        this.shape = Objects.requireNonNull(shape, "shape");
     }
 
     public HillshadeOptions options() {
@@ -51,7 +58,7 @@ final class HornIllumination implements IlluminationStage {
         final double[] win = new double[9];
         final FiniteWindows windows = new FiniteWindows(v, width, height, col0, row0, w, h);
         final int[] runs = new int[FiniteWindows.runsLength(w)];
-        final HornRows rows = new HornRows(w, zf, le, ln, lu);
+        final HornRows rows = new HornRows(w, zf, le, ln, lu, shape);
         for (int r = row0; r < row0 + h; r++) {
             final double dx = spacing.eastWest(r);
             final double dy = spacing.northSouth(r);

@@ -41,9 +41,16 @@ import java.util.Objects;
 final class JDem846Illumination implements IlluminationStage {
 
     private final HillshadeOptions options;
+    private final KernelShape shape;
 
     public JDem846Illumination(HillshadeOptions options) {
+        this(options, KernelShape.CHOSEN);
+    }
+
+    /** With the row kernels' loops in {@code shape} (the same floats either way). */
+    JDem846Illumination(HillshadeOptions options, KernelShape shape) {
         this.options = Objects.requireNonNull(options, "options");
+        this.shape = Objects.requireNonNull(shape, "shape");
     }
 
     public HillshadeOptions options() {
@@ -64,7 +71,7 @@ final class JDem846Illumination implements IlluminationStage {
         final int height = dem.height();
         final FiniteWindows windows = new FiniteWindows(v, width, height, col0, row0, w, h);
         final int[] runs = new int[FiniteWindows.runsLength(w)];
-        final JDem846Rows rows = new JDem846Rows(w, k, le, ln, lu, belowHorizon);
+        final JDem846Rows rows = new JDem846Rows(w, k, le, ln, lu, belowHorizon, shape);
         for (int r = row0; r < row0 + h; r++) {
             final double dx = spacing.eastWest(r);
             final double dy = spacing.northSouth(r);

@@ -25,6 +25,7 @@ final class JDem846Rows {
      */
     static final double MIN_SPACING = 1e-3;
 
+    private final KernelShape shape;
     private final double k;
     private final double le;
     private final double ln;
@@ -50,7 +51,8 @@ final class JDem846Rows {
      * @param lu           its up component
      * @param belowHorizon the light is at or below the horizon
      */
-    JDem846Rows(int maxRun, double k, double le, double ln, double lu, boolean belowHorizon) {
+    JDem846Rows(int maxRun, double k, double le, double ln, double lu, boolean belowHorizon, KernelShape shape) {
+        this.shape = shape;
         this.k = k;
         this.le = le;
         this.ln = ln;
@@ -91,6 +93,10 @@ final class JDem846Rows {
      * @param dy    north–south cell spacing of the row
      */
     void shade(float[] v, int width, int r, int a, int b, double dx, double dy, float[] out, int o) {
+        if (shape == KernelShape.FUSED) {
+            shadeFused(v, width, r, a, b, dx, dy, out, o);
+            return;
+        }
         for (int from = a; from < b; from += CHUNK) {
             shadeChunk(v, width, r, from, Math.min(b, from + CHUNK), dx, dy, out, o + from - a);
         }
@@ -126,6 +132,30 @@ final class JDem846Rows {
         lengths(x, y, z, iWN, n);
         cosines(x, y, z, le, ln, lu, iWN, n);
         store(iWN, belowHorizon, out, o, n);
+    }
+
+    /** The steps of {@link #shadeChunk} for one cell at a time, in one loop ({@link KernelShape#FUSED}). */
+    private void shadeFused(float[] v, int width, int r, int a, int b, double dx, double dy, float[] out, int o) {
+        final double c = dx * dy;
+        final double cc = c * c;
+        final int mid = r * width + a;
+        final int n = b - a;
+        for (int j = 0; j < n; j++) {
+            final double centre = v[mid + j];
+            final double w = dy * (((double) v[mid + j - 1] - centre) * k);
+            final double e = -dy * (((double) v[mid + j + 1] - centre) * k);
+            final double north = -dx * (((double) v[mid + j - width] - centre) * k);
+            final double south = dx * (((double) v[mid + j + width] - centre) * k);
+            final double iWN = 1.0 / Math.sqrt(w * w + north * north + cc);
+            final double iWS = 1.0 / Math.sqrt(w * w + south * south + cc);
+            final double iES = 1.0 / Math.sqrt(e * e + south * south + cc);
+            final double iEN = 1.0 / Math.sqrt(e * e + north * north + cc);
+            final double x = w * (iWN + iWS) + e * (iES + iEN);
+            final double y = north * (iWN + iEN) + south * (iWS + iES);
+            final double z = c * (iWN + iWS + iES + iEN);
+            final double cos = (x * le + y * ln + z * lu) / Math.sqrt(x * x + y * y + z * z);
+            out[o + j] = (float) Clamp.between(belowHorizon && cos > 0 ? 0.0 : cos, -1.0, 1.0);
+        }
     }
 
     // One loop per method: small compilations, and no on-stack replacement of a method with many loops (which

@@ -11,11 +11,11 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 /**
- * The row kernels ({@link HornRows}, {@link JDem846Rows}) must give the per-cell paths' floats bit for bit: every
- * cell of a stage's output is compared with {@link HornIllumination#cell} (gdaldem's window, {@link GdalWindow}) and
- * with {@link JDem846Illumination#general}, on the real DEMs of testdata/dem with no-data and infinities inserted,
- * crops of odd sizes and 1–3 cells wide or high, tiles anywhere (at the grid's edges too), and on grids of extreme
- * values and cell sizes.
+ * The row kernels ({@link HornRows}, {@link JDem846Rows}), in both loop shapes ({@link KernelShape}), must give the
+ * per-cell paths' floats bit for bit: every cell of a stage's output is compared with {@link HornIllumination#cell}
+ * (gdaldem's window, {@link GdalWindow}) and with {@link JDem846Illumination#general}, on the real DEMs of
+ * testdata/dem with no-data and infinities inserted, crops of odd sizes and 1–3 cells wide or high, tiles anywhere
+ * (at the grid's edges too), and on grids of extreme values and cell sizes.
  */
 class RowKernelEquivalenceTest {
 
@@ -145,10 +145,17 @@ class RowKernelEquivalenceTest {
 
     private static void check(String what, Dem dem, HillshadeOptions options, LightDirection light, int c0, int r0,
                               int tw, int th) {
+        for (KernelShape shape : KernelShape.values()) {
+            check(what + " " + shape, dem, options, light, c0, r0, tw, th, shape);
+        }
+    }
+
+    private static void check(String what, Dem dem, HillshadeOptions options, LightDirection light, int c0, int r0,
+                              int tw, int th, KernelShape shape) {
         float[] horn = new float[tw * th];
         float[] jdem = new float[tw * th];
-        new HornIllumination(options).illuminate(dem, light, c0, r0, tw, th, horn);
-        new JDem846Illumination(options).illuminate(dem, light, c0, r0, tw, th, jdem);
+        new HornIllumination(options, shape).illuminate(dem, light, c0, r0, tw, th, horn);
+        new JDem846Illumination(options, shape).illuminate(dem, light, c0, r0, tw, th, jdem);
         float[] v = dem.backingArray();
         int width = dem.width();
         int height = dem.height();
