@@ -64,8 +64,7 @@ final class AreaRenderer {
                     progress).argb(), null);
             case HILLSHADE -> new Pixels(null, renderer.hillshadeGray(dem, scene.hillshade(),
                     scene.hillshadeOptions(), l.field(), area, progress));
-            case SHADOWS -> new Pixels(null, maskBytes(renderer.shadows(dem, scene.withLight(l.field()), area,
-                    progress)));
+            case SHADOWS -> new Pixels(null, renderer.shadowBytes(dem, scene.withLight(l.field()), area, progress));
             case SKY_VIEW -> new Pixels(null, skyViewBytes(renderer.skyView(dem, scene, area, progress)));
             case TINT -> throw new AssertionError();
         };
@@ -77,15 +76,6 @@ final class AreaRenderer {
         for (int i = 0; i < factor.length; i++) {
             float f = factor[i];
             bytes[i] = f == f ? (byte) (1 + Rounding.halfUp(Clamp.between(f, 0f, 1f) * 254f)) : 0;
-        }
-        return bytes;
-    }
-
-    /** The shadowed fraction as 0..255. */
-    private static byte[] maskBytes(float[] mask) {
-        byte[] bytes = new byte[mask.length];
-        for (int i = 0; i < mask.length; i++) {
-            bytes[i] = (byte) Rounding.halfUp(Clamp.between(mask[i], 0f, 1f) * 255f);
         }
         return bytes;
     }

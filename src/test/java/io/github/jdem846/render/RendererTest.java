@@ -35,6 +35,30 @@ class RendererTest {
     }
 
     @Test
+    void shadowBytesAreTheShadowedFractionsTimes255RoundedHalfUp() throws InterruptedException {
+        io.github.jdem846.shadow.CellWindow area = new io.github.jdem846.shadow.CellWindow(11, 7, 251, 170);
+        for (ShadowAlgorithm alg : new ShadowAlgorithm[] {ShadowAlgorithm.SWEEP, ShadowAlgorithm.EXACT, null}) {
+            Scene scene = Scene.defaults().withShadows(alg).withLight(new LightDirection(250, 6));
+            if (alg == ShadowAlgorithm.SWEEP) {
+                scene = scene.withShadowOptions(scene.shadowOptions().withSoftShadows(true));
+            }
+            float[] fractions = new Renderer(new RenderSettings(1, 4096)).shadows(BT, scene, area, RenderProgress.NONE);
+            int partial = 0;
+            for (int threads : new int[] {1, 3}) {
+                byte[] bytes = new Renderer(new RenderSettings(threads, 16)).shadowBytes(BT, scene, area,
+                        RenderProgress.NONE);
+                assertEquals(fractions.length, bytes.length);
+                for (int i = 0; i < bytes.length; i++) {
+                    int expected = Math.round(Math.max(0f, Math.min(1f, fractions[i])) * 255f);
+                    assertEquals(expected, bytes[i] & 0xFF, alg + " cell " + i + " of " + fractions[i]);
+                    partial += expected > 0 && expected < 255 ? 1 : 0;
+                }
+            }
+            assertEquals(alg == ShadowAlgorithm.SWEEP, partial > 0, alg + ": cells partly in shadow " + partial);
+        }
+    }
+
+    @Test
     void anAreaRendersLikeTheSameCellsOfTheWholeGrid() throws InterruptedException {
         io.github.jdem846.shadow.CellWindow area = new io.github.jdem846.shadow.CellWindow(37, 21, 150, 90);
         for (ShadowAlgorithm alg : new ShadowAlgorithm[] {ShadowAlgorithm.MARCH, ShadowAlgorithm.EXACT}) {
