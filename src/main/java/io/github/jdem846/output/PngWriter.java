@@ -1,5 +1,6 @@
 package io.github.jdem846.output;
 
+import io.github.jdem846.internal.SpareArrays;
 import java.awt.image.BufferedImage;
 import java.io.BufferedOutputStream;
 import java.io.ByteArrayOutputStream;
@@ -11,6 +12,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.function.LongConsumer;
 import java.util.zip.Adler32;
 import java.util.zip.CRC32;
@@ -76,6 +78,10 @@ final class PngWriter implements BandEncoder {
     private final int level;
     private final boolean parallel;
     private final int batch;
+    /** Filtered rows and deflated bytes of segments done, and deflaters, for the next segments. */
+    private final SpareArrays<byte[]> spareFiltered = SpareArrays.bytes();
+    private final SpareArrays<byte[]> spareDeflated = SpareArrays.bytes();
+    private final ConcurrentLinkedQueue<Deflater> spareDeflaters = new ConcurrentLinkedQueue<>();
     private long adler = 1;
     private boolean finished;
     private LongConsumer encoded = rows -> { };
@@ -177,18 +183,27 @@ final class PngWriter implements BandEncoder {
             idat.flush();
             chunk(out, "IEND", new byte[0], 0);
             out.flush();
+            endDeflaters();
         }
     }
 
     @Override
     public void close() throws IOException {
+        endDeflaters();
         out.close();
+    }
+
+    private void endDeflaters() {
+        for (Deflater d = spareDeflaters.poll(); d != null; d = spareDeflaters.poll()) {
+            d.end();
+        }
     }
 
     /** The segments a band completed: filtered and deflated, a batch at a time, and written in order. */
     private void compress(List<RowChunks.Chunk> ready) throws IOException {
         Batches.run(ready.size(), batch, parallel, i -> compress(ready.get(i)), s -> {
             idat.write(s.deflated, s.length);
+            spareDeflated.give(s.deflated);
             adler = combineAdler32(adler, s.adler32, s.inputLength);
             encoded.accept(s.rows);
         });
@@ -204,7 +219,7 @@ final class PngWriter implements BandEncoder {
         encoded = java.util.Objects.requireNonNull(rows, "rows");
     }
 
-    /** One segment's raw deflate data and the Adler-32 and length of its filtered rows. */
+    /** One segment's raw deflate data (the first {@code length} bytes) and the Adler-32 and length of its rows. */
     private record Segment(byte[] deflated, int length, long adler32, int inputLength, int rows) {
     }
 
@@ -213,16 +228,16 @@ final class PngWriter implements BandEncoder {
         boolean last = segment.index() == segmentCount - 1;
         int rowBytes = 1 + segments.rowBytes();
         int n = segment.rows() * rowBytes;
-        byte[] filtered = new byte[n];
+        byte[] filtered = spareFiltered.take(n);
         new PngRowFilter(segments.rowBytes(), bytesPerPixel).filter(segment, filtered);
         Adler32 adler = new Adler32();
         adler.update(filtered, 0, n);
-        if (level == 0 || bytesPerPixel != 1) {
-            return segment(deflate(filtered, n, last, Deflater.DEFAULT_STRATEGY), adler, n, segment);
-        }
-        int strategy = entropyBits(filtered, n) * HUFFMAN_ONLY_RATIO < 8.0 * n ? Deflater.DEFAULT_STRATEGY
+        int strategy = level == 0 || bytesPerPixel != 1
+                || entropyBits(filtered, n) * HUFFMAN_ONLY_RATIO < 8.0 * n ? Deflater.DEFAULT_STRATEGY
                 : Deflater.HUFFMAN_ONLY;
-        return segment(deflate(filtered, n, last, strategy), adler, n, segment);
+        Deflated d = deflate(filtered, n, last, strategy);
+        spareFiltered.give(filtered);
+        return new Segment(d.bytes, d.length, adler.getValue(), n, segment.rows());
     }
 
     /**
@@ -243,10 +258,6 @@ final class PngWriter implements BandEncoder {
         return bits / StrictMath.log(2);
     }
 
-    private static Segment segment(Deflated d, Adler32 adler, int n, RowChunks.Chunk segment) {
-        return new Segment(Arrays.copyOf(d.bytes, d.length), d.length, adler.getValue(), n, segment.rows());
-    }
-
     /** Raw deflate data in the first {@code length} bytes of {@code bytes}. */
     private record Deflated(byte[] bytes, int length) {
     }
@@ -256,14 +267,15 @@ final class PngWriter implements BandEncoder {
      * the final block when {@code last}.
      */
     private Deflated deflate(byte[] filtered, int n, boolean last, int strategy) {
-        Deflater deflater = new Deflater(level, true);
+        Deflater spare = spareDeflaters.poll();
+        Deflater deflater = spare != null ? spare : new Deflater(level, true);
         try {
             deflater.setStrategy(strategy);
             deflater.setInput(filtered, 0, n);
             if (last) {
                 deflater.finish();
             }
-            byte[] deflated = new byte[(int) Math.min(Integer.MAX_VALUE - 16, n + (n >> 3) + 64L)];
+            byte[] deflated = spareDeflated.take((int) Math.min(Integer.MAX_VALUE - 16, n + (n >> 3) + 64L));
             int length = 0;
             while (true) {
                 int room = deflated.length - length;
@@ -279,7 +291,8 @@ final class PngWriter implements BandEncoder {
             }
             return new Deflated(deflated, length);
         } finally {
-            deflater.end();
+            deflater.reset();                   // a fresh stream, with this writer's level; same bytes as a new one
+            spareDeflaters.offer(deflater);
         }
     }
 

@@ -2,6 +2,7 @@ package io.github.jdem846.render;
 
 import io.github.jdem846.internal.Clamp;
 import io.github.jdem846.internal.Rounding;
+import io.github.jdem846.internal.SpareArrays;
 import io.github.jdem846.light.LightDirection;
 import io.github.jdem846.light.LightField;
 import io.github.jdem846.raster.Dem;
@@ -140,7 +141,7 @@ public final class Renderer {
         int demWidth = dem.width();
         boolean covered = dem.hasCoverage();
         int[] drape = drape(dem, scene, area);
-        TileBuffers buffers = new TileBuffers();
+        SpareArrays<float[]> buffers = SpareArrays.floats();
         new TileExecutor(pool, settings.tileSize()).forEachTile(width, height, RenderProgress.SHADING, progress,
                 (c0, r0, w, h) -> {
                     float[] dot = buffers.take(w * h);
@@ -288,7 +289,7 @@ public final class Renderer {
     private void illuminateTiles(Dem dem, IlluminationStage stage, LightField light, CellWindow area,
                                  RenderProgress progress, IlluminatedTile sink) throws InterruptedException {
         requireInside(area, dem);
-        TileBuffers buffers = new TileBuffers();
+        SpareArrays<float[]> buffers = SpareArrays.floats();
         try (WorkerPool workers = WorkerPool.of(settings)) {
             new TileExecutor(workers.pool, settings.tileSize()).forEachTile(area.width(), area.height(),
                     RenderProgress.HILLSHADE,
