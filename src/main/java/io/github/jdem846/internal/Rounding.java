@@ -6,7 +6,7 @@ package io.github.jdem846.internal;
  * HotSpot from vectorising the loop; here the sum {@code v + 0.5} is taken in double, where it is exact for every
  * float, so its floor is {@code Math.round}'s answer without the special cases: 3–10× faster on 16 million cells
  * (JDK 17 / 25). {@code Math.rint} is an intrinsic of the optimising JIT only: the first-tier JIT, which the launcher
- * chooses for small jobs, calls its Java code, a third of a Horn hillshade's time on 16 million cells.
+ * chooses for small jobs, runs its Java code, a third of the Horn hillshade phase of 16 million cells in JFR.
  */
 public final class Rounding {
 

@@ -34,7 +34,7 @@ public final class SpareArrays<T> {
     }
 
     /**
-     * An array of at least {@code length} elements, not cleared.
+     * An array of at least {@code minLength} elements, not cleared.
      *
      * @param minLength the elements needed
      * @return a spare array if the next one is long enough, else a new one

@@ -196,7 +196,7 @@ public enum HillshadeMethod {
     /**
      * The gray bytes of {@code n} illumination values: {@code out[to + i] = (byte) gray(illumination[from + i])}.
      * Horn and jdem846 write their conversion out in the loop: the first-tier JIT, which the launcher chooses for
-     * small jobs, does not inline a call through this enum, a tenth of a Horn hillshade's time on 16 million cells.
+     * small jobs, does not inline a call through this enum.
      *
      * @param illumination the illumination as this method's stage writes it; NaN for no-data
      * @param from the first value to convert

@@ -37,6 +37,7 @@ final class HornRows {
      * @param le     the light's east component
      * @param ln     its north component
      * @param lu     its up component
+     * @param shape  the loops' shape; {@link KernelShape#FUSED} needs none of the chunk arrays
      */
     HornRows(int maxRun, double zf, double le, double ln, double lu, KernelShape shape) {
         this.shape = shape;
@@ -44,7 +45,7 @@ final class HornRows {
         this.le = le;
         this.ln = ln;
         this.lu = lu;
-        final int chunk = Math.min(maxRun, CHUNK);
+        final int chunk = shape == KernelShape.FUSED ? 0 : Math.min(maxRun, CHUNK);
         top = new double[chunk + 2];
         bottom = new double[chunk + 2];
         columnSum = new double[chunk + 2];

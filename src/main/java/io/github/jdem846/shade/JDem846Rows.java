@@ -50,6 +50,7 @@ final class JDem846Rows {
      * @param ln           its north component
      * @param lu           its up component
      * @param belowHorizon the light is at or below the horizon
+     * @param shape        the loops' shape; {@link KernelShape#FUSED} needs none of the chunk arrays
      */
     JDem846Rows(int maxRun, double k, double le, double ln, double lu, boolean belowHorizon, KernelShape shape) {
         this.shape = shape;
@@ -57,7 +58,7 @@ final class JDem846Rows {
         this.le = le;
         this.ln = ln;
         this.lu = lu;
-        final int chunk = Math.min(maxRun, CHUNK);
+        final int chunk = shape == KernelShape.FUSED ? 0 : Math.min(maxRun, CHUNK);
         this.belowHorizon = belowHorizon;
         aW = new double[chunk];
         aE = new double[chunk];
