@@ -2,8 +2,7 @@
 """readphase.py RUNS INPUT NAME=JAR ...: `java -jar JAR hillshade --method horn INPUT -o OUT --verbose` for each jar,
 interleaved RUNS times after one warm-up round (in the given order on even rounds, reversed on odd ones); prints per
 jar the median and all values of the `read` phase that --verbose reports, the median wall time and the median CPU
-time (user + system) of the whole command, then the 1-minute load average. A NAME ending in "off" runs its jar with
--Djdem846.warmUp=off (no warm-up threads)."""
+time (user + system) of the whole command, then the 1-minute load average."""
 import os, sys, subprocess, time, statistics, re, tempfile
 runs = int(sys.argv[1]); dem = sys.argv[2]; jars = [a.split('=', 1) for a in sys.argv[3:]]
 res = {n: {'read': [], 'wall': [], 'cpu': []} for n, _ in jars}; loads = []
@@ -11,8 +10,7 @@ out = tempfile.mkdtemp()
 for r in range(runs + 1):
     loads.append(os.getloadavg()[0])
     for n, jar in (jars if r % 2 == 0 else jars[::-1]):
-        cmd = ["java"] + (["-Djdem846.warmUp=off"] if n.endswith("off") else []) + [
-            "-jar", jar, "hillshade", "--method", "horn", dem, "-o", os.path.join(out, n + ".png"), "--verbose"]
+        cmd = ["java", "-jar", jar, "hillshade", "--method", "horn", dem, "-o", os.path.join(out, n + ".png"), "--verbose"]
         t0 = time.perf_counter()
         p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         err = p.stderr.read()

@@ -15,19 +15,15 @@ final class ConsoleJobListener implements JobListener {
     private final PrintWriter err;
     private final PhaseTimes times;
     private final String sunTime;
-    private final Runnable afterRead;
 
     /**
-     * @param sunTime   the {@code --sun-time} as given, named in the sun's line
-     * @param afterRead run when the "read" phase ends (before its lap is taken)
+     * @param sunTime the {@code --sun-time} as given, named in the sun's line
      */
-    ConsoleJobListener(ConsoleProgress progress, PrintWriter err, PhaseTimes times, String sunTime,
-                       Runnable afterRead) {
+    ConsoleJobListener(ConsoleProgress progress, PrintWriter err, PhaseTimes times, String sunTime) {
         this.progress = progress;
         this.err = err;
         this.times = times;
         this.sunTime = sunTime;
-        this.afterRead = afterRead;
     }
 
     @Override
@@ -43,9 +39,6 @@ final class ConsoleJobListener implements JobListener {
 
     @Override
     public void phaseDone(String phase) {
-        if (phase.equals("read")) {
-            afterRead.run();
-        }
         times.lap(phase);
     }
 

@@ -1,24 +1,20 @@
 package io.github.jdem846.cli;
 
-import io.github.jdem846.job.JobListener;
 import io.github.jdem846.job.OverlaidJob;
 import io.github.jdem846.job.ReliefJob;
-import io.github.jdem846.job.Sun;
 import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.WriteOptions;
 import io.github.jdem846.overlay.Overlay;
 import io.github.jdem846.raster.GridRequestException;
-import io.github.jdem846.render.RenderSettings;
 import java.io.PrintWriter;
 import java.util.List;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
  * Runs a rendering command's {@link ReliefJob} for a person at a terminal: the output checked against the input
- * first, the kernels warmed up while the file is read ({@link KernelWarmUp}), a progress bar, notices and the sun
- * used on stderr, the phase times with {@code --verbose}; {@code --memory} as the job's memory budget (a larger
- * picture is rendered in tiles); an output name without a known image extension, and a
- * window or size that does not fit the grid, reported as bad usage.
+ * first, a progress bar, notices and the sun used on stderr, the phase times with {@code --verbose};
+ * {@code --memory} as the job's memory budget (a larger picture is rendered in tiles); an output name without a
+ * known image extension, and a window or size that does not fit the grid, reported as bad usage.
  */
 final class JobRunner {
 
@@ -71,12 +67,8 @@ final class JobRunner {
         Usage.check(spec, "--output", () -> ImageOutput.filesWritten(output.path(), options));   // the extension
         job.requireDrawable();
         job.checkOutput(output.path(), options);
-        ReliefJob warmUpJob = job.withExecution(new RenderSettings(1, 64)).withWindow(null)
-                .withSize(io.github.jdem846.render.OutputSize.FULL)
-                .withSun(job.sun().byTime() ? Sun.fixed(300, 10) : job.sun());
-        KernelWarmUp warmUp = KernelWarmUp.start(dem -> warmUpJob.run(dem, JobListener.NONE), input.input());
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet, output.progress, err)) {
-            ConsoleJobListener listener = new ConsoleJobListener(progress, err, times, sunTime, warmUp::stop);
+            ConsoleJobListener listener = new ConsoleJobListener(progress, err, times, sunTime);
             if (values) {
                 job.runAndWriteValues(output.path(), options, listener);
             } else if (overlays.isEmpty()) {
@@ -86,8 +78,6 @@ final class JobRunner {
             }
         } catch (GridRequestException e) {
             throw input.usageError(e);
-        } finally {
-            warmUp.stop();
         }
         times.print(verbose.isVerbose(), err);
         return 0;

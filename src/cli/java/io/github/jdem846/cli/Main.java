@@ -72,7 +72,6 @@ public final class Main implements Runnable {
 
     public static void main(String[] args) {
         configureLibraryLogs(java.util.Arrays.asList(args).contains("--verbose"));
-        InputWarmUp.start(args);
         System.exit(execute(commandLine(args), args));
     }
 

@@ -88,7 +88,7 @@ final class ProjectedJobRunner {
         job.requireDrawable();
         PhaseTimes times = new PhaseTimes();
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet, output.progress, err)) {
-            ConsoleJobListener listener = new ConsoleJobListener(progress, err, times, sunTime, () -> { });
+            ConsoleJobListener listener = new ConsoleJobListener(progress, err, times, sunTime);
             ProjectedRender render = new ProjectedRender(map, width, height);
             if (overlays.isEmpty()) {
                 render.runAndWrite(job, output.path(), options, listener);

@@ -171,7 +171,7 @@ public final class TilesCommand implements Callable<Integer> {
         PhaseTimes times = new PhaseTimes();
         TileReport report;
         try (ConsoleProgress bar = ConsoleProgress.create(quiet, progress, err)) {
-            report = job.run(output, new ConsoleJobListener(bar, err, times, sun.time(), () -> { }));
+            report = job.run(output, new ConsoleJobListener(bar, err, times, sun.time()));
         }
         if (!quiet) {
             PrintWriter out = spec.commandLine().getOut();

@@ -140,7 +140,7 @@ public final class ViewCommand implements Callable<Integer> {
         WriteOptions writeOptions = output.writeOptions(execution);
         try (ConsoleProgress progress = ConsoleProgress.create(output.quiet, output.progress, err)) {
             new ViewJob(relief, camera, options, overlays.read()).runAndWrite(output.path(), writeOptions,
-                    new ConsoleJobListener(progress, err, times, sun.time(), () -> { }));
+                    new ConsoleJobListener(progress, err, times, sun.time()));
         } catch (GridRequestException e) {
             throw input.usageError(e);
         }
