@@ -65,6 +65,7 @@ final class CogWriter implements BandEncoder {
     private final GeoReference geo;
     private final Double noData;
     private final List<Level> levels = new ArrayList<>();
+    private final TiffBlocks blocks = new TiffBlocks();
     private final OverviewPyramid pyramid;
     private final byte[] row;
     private boolean finished;
@@ -108,7 +109,7 @@ final class CogWriter implements BandEncoder {
             for (int r = 0; r < tileRow.rows(); r++) {
                 tileRow.row(r, x0, across, raw, r * tileRowBytes);
             }
-            return TiffBlocks.deflate(raw, tileSize, tileRowBytes, samplesPerPixel, true);
+            return blocks.deflate(raw, tileSize, tileRowBytes, samplesPerPixel, true);
         }
     }
 
@@ -243,6 +244,7 @@ final class CogWriter implements BandEncoder {
     /** Deletes the scratch files. */
     @Override
     public void close() throws IOException {
+        blocks.end();
         IOException failure = null;
         for (Level level : levels) {
             try {

@@ -1,5 +1,6 @@
 package io.github.jdem846.output;
 
+import io.github.jdem846.internal.SpareArrays;
 import io.github.jdem846.output.TiffDirectory.Field;
 import java.io.IOException;
 import java.nio.ByteBuffer;
@@ -48,6 +49,8 @@ final class GeoTiffWriter implements BandEncoder {
     private final boolean big;
     private final long[] offsets;
     private final long[] counts;
+    private final TiffBlocks blocks = new TiffBlocks();
+    private final SpareArrays<byte[]> spareRows = SpareArrays.bytes();
     private long position;
     private boolean finished;
     private LongConsumer encoded = rows -> { };
@@ -117,6 +120,7 @@ final class GeoTiffWriter implements BandEncoder {
 
     @Override
     public void close() throws IOException {
+        blocks.end();
         channel.close();
     }
 
@@ -152,10 +156,12 @@ final class GeoTiffWriter implements BandEncoder {
     /** A strip's rows, with the predictor for 8-bit samples, as one zlib stream. */
     private byte[] compress(RowChunks.Chunk strip) {
         int rowBytes = strips.rowBytes();
-        byte[] raw = new byte[strip.rows() * rowBytes];
+        byte[] raw = spareRows.take(strip.rows() * rowBytes);
         for (int r = 0; r < strip.rows(); r++) {
             strip.row(r, raw, r * rowBytes);
         }
-        return TiffBlocks.deflate(raw, strip.rows(), rowBytes, samplesPerPixel, predictor);
+        byte[] data = blocks.deflate(raw, strip.rows(), rowBytes, samplesPerPixel, predictor);
+        spareRows.give(raw);
+        return data;
     }
 }
