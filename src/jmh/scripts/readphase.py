@@ -10,7 +10,8 @@ out = tempfile.mkdtemp()
 for r in range(runs + 1):
     loads.append(os.getloadavg()[0])
     for n, jar in (jars if r % 2 == 0 else jars[::-1]):
-        cmd = ["java", "-jar", jar, "hillshade", "--method", "horn", dem, "-o", os.path.join(out, n + ".png"), "--verbose"]
+        cmd = ["java", "-jar", jar, "hillshade", "--method", "horn", dem, "-o", os.path.join(out, n + ".png"),
+               "--verbose"]
         t0 = time.perf_counter()
         p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         err = p.stderr.read()

@@ -164,8 +164,8 @@ class LauncherIT {
         assertEquals(4, tier(cache, "hillshade", huge.toString(), "-o", out.toString()), "257 MiB of input");
         assertEquals(1, tier(cache, "hillshade", dem.toString(), "-o", huge.toString()),
                 "an existing output file is not input");
-        assertEquals(4, tierWithOptions(cache, "-XX:TieredStopAtLevel=4", "hillshade", dem.toString(), "-o", out.toString()),
-                "JDEM846_OPTS chooses the compiler");
+        assertEquals(4, tierWithOptions(cache, "-XX:TieredStopAtLevel=4", "hillshade", dem.toString(), "-o",
+                out.toString()), "JDEM846_OPTS chooses the compiler");
     }
 
     private static Path sparseFile(Path file, long length) throws IOException {
