@@ -12,7 +12,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.function.LongConsumer;
 import java.util.zip.Adler32;
 import java.util.zip.CRC32;
@@ -81,7 +80,7 @@ final class PngWriter implements BandEncoder {
     /** Filtered rows and deflated bytes of segments done, and deflaters, for the next segments. */
     private final SpareArrays<byte[]> spareFiltered = SpareArrays.bytes();
     private final SpareArrays<byte[]> spareDeflated = SpareArrays.bytes();
-    private final ConcurrentLinkedQueue<Deflater> spareDeflaters = new ConcurrentLinkedQueue<>();
+    private final SpareDeflaters spareDeflaters;
     private long adler = 1;
     private boolean finished;
     private LongConsumer encoded = rows -> { };
@@ -105,6 +104,7 @@ final class PngWriter implements BandEncoder {
         int rowBytes = 1 + Pixels.rowBytes(width, bytesPerPixel, 8);
         this.bytesPerPixel = bytesPerPixel;
         this.level = compressionLevel;
+        this.spareDeflaters = new SpareDeflaters(compressionLevel, true);
         this.parallel = parallel;
         this.batch = Batches.size(parallel, SEGMENTS_PER_BATCH_AND_PROCESSOR, MAX_SEGMENTS_PER_BATCH);
         int rowsPerSegment = Math.max(1, SEGMENT_BYTES / rowBytes);
@@ -183,20 +183,14 @@ final class PngWriter implements BandEncoder {
             idat.flush();
             chunk(out, "IEND", new byte[0], 0);
             out.flush();
-            endDeflaters();
+            spareDeflaters.end();
         }
     }
 
     @Override
     public void close() throws IOException {
-        endDeflaters();
+        spareDeflaters.end();
         out.close();
-    }
-
-    private void endDeflaters() {
-        for (Deflater d = spareDeflaters.poll(); d != null; d = spareDeflaters.poll()) {
-            d.end();
-        }
     }
 
     /** The segments a band completed: filtered and deflated, a batch at a time, and written in order. */
@@ -267,8 +261,7 @@ final class PngWriter implements BandEncoder {
      * the final block when {@code last}.
      */
     private Deflated deflate(byte[] filtered, int n, boolean last, int strategy) {
-        Deflater spare = spareDeflaters.poll();
-        Deflater deflater = spare != null ? spare : new Deflater(level, true);
+        Deflater deflater = spareDeflaters.take();
         try {
             deflater.setStrategy(strategy);
             deflater.setInput(filtered, 0, n);
@@ -291,8 +284,7 @@ final class PngWriter implements BandEncoder {
             }
             return new Deflated(deflated, length);
         } finally {
-            deflater.reset();                   // a fresh stream, with this writer's level; same bytes as a new one
-            spareDeflaters.offer(deflater);
+            spareDeflaters.give(deflater);
         }
     }
 

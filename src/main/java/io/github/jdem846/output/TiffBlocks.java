@@ -2,15 +2,13 @@ package io.github.jdem846.output;
 
 import io.github.jdem846.internal.SpareArrays;
 import java.util.Arrays;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.zip.Deflater;
 
 /**
  * The compressed data of one TIFF strip or tile: its rows with the horizontal differencing predictor when asked,
  * as one zlib stream (Deflate, compression 8, the stream GDAL calls DEFLATE) at level {@value #LEVEL}. One instance
- * per file reuses its deflaters (reset: the same bytes as new ones) and output buffers across blocks and threads:
- * a new deflater allocates and clears some 270 KB, and a 4000² mask has 250 strips of 64 KB. {@link #end()} frees
- * the deflaters.
+ * per file reuses its deflaters ({@link SpareDeflaters}) and output buffers across blocks and threads: a 4000² mask
+ * has 250 strips of 64 KB. {@link #end()} frees the deflaters.
  */
 final class TiffBlocks {
 
@@ -21,7 +19,7 @@ final class TiffBlocks {
      */
     static final int LEVEL = 1;
 
-    private final ConcurrentLinkedQueue<Deflater> deflaters = new ConcurrentLinkedQueue<>();
+    private final SpareDeflaters deflaters = new SpareDeflaters(LEVEL, false);
     private final SpareArrays<byte[]> buffers = SpareArrays.bytes();
 
     /**
@@ -43,8 +41,7 @@ final class TiffBlocks {
             }
         }
         int n = rows * rowBytes;
-        Deflater spare = deflaters.poll();
-        Deflater deflater = spare != null ? spare : new Deflater(LEVEL);
+        Deflater deflater = deflaters.take();
         byte[] buffer = buffers.take((int) Math.min(Integer.MAX_VALUE - 16, deflateBound(n)));
         try {
             deflater.setInput(raw, 0, n);
@@ -58,17 +55,14 @@ final class TiffBlocks {
             }
             return Arrays.copyOf(buffer, length);
         } finally {
-            deflater.reset();
-            deflaters.offer(deflater);
+            deflaters.give(deflater);
             buffers.give(buffer);
         }
     }
 
     /** Frees the deflaters; a later {@link #deflate} makes new ones. */
     void end() {
-        for (Deflater d = deflaters.poll(); d != null; d = deflaters.poll()) {
-            d.end();
-        }
+        deflaters.end();
     }
 
     /**
