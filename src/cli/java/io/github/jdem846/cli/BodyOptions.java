@@ -1,6 +1,7 @@
 package io.github.jdem846.cli;
 
 import io.github.jdem846.sun.Body;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -9,6 +10,7 @@ import picocli.CommandLine.Spec;
  * {@code --body earth|moon|mars} or {@code --radius M}: the body a DEM lies on, used when its CRS names no ellipsoid
  * (or none was read from the file), for metric cell sizes of geographic grids and the radius of {@code --curvature}.
  */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 final class BodyOptions {
 
     @Spec(Spec.Target.MIXEE)

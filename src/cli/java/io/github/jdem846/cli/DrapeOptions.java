@@ -6,11 +6,13 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /**
  * {@code --drape IMAGE}, repeatable: georeferenced images laid over the tint before the light ({@link Drape}).
  */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 final class DrapeOptions {
 
     @Option(names = "--drape", paramLabel = "IMAGE",

@@ -2,11 +2,13 @@ package io.github.jdem846.cli;
 
 import io.github.jdem846.render.RenderSettings;
 import java.util.Locale;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.TypeConversionException;
 
 /** {@code --threads}, {@code --tile-size} and {@code --memory}, shared by the rendering subcommands. */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 public final class ExecutionOptions {
 
     @Option(names = "--threads", paramLabel = "N", converter = Converters.Threads.class,

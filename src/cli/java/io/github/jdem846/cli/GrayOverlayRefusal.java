@@ -1,5 +1,6 @@
 package io.github.jdem846.cli;
 
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -9,6 +10,7 @@ import picocli.CommandLine.Spec;
  * A hidden {@code --overlay} on the commands that write one gray band (hillshade, shadows, skyview): overlays are
  * drawn in colour, so it is refused as bad usage, with the command that draws them instead.
  */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 final class GrayOverlayRefusal {
 
     @Spec(Spec.Target.MIXEE)

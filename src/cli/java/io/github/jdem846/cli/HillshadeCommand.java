@@ -18,7 +18,7 @@ import picocli.CommandLine.Option;
  * combined and igor give gdaldem's bytes). gdaldem's own spellings are accepted: {@code -az}, {@code -alt},
  * {@code -z}, {@code -s}, {@code -multidirectional}, {@code -combined}, {@code -igor} and {@code -compute_edges}.
  */
-@Command(name = "hillshade", mixinStandardHelpOptions = true, modelTransformer = GdaldemPositionals.Transformer.class,
+@Command(name = "hillshade", addMethodSubcommands = false, mixinStandardHelpOptions = true, modelTransformer = GdaldemPositionals.Transformer.class,
         description = "Write a gray hillshade (0 = no-data, 1..255), gdaldem-compatible for horn, multidirectional, "
                 + "combined and igor.")
 public final class HillshadeCommand implements Callable<Integer> {

@@ -27,7 +27,7 @@ import picocli.CommandLine.Parameters;
  * FILE is given; of several files, the mosaic they make, with the list of files. Elevations are streamed, so files
  * larger than the heap can be described.
  */
-@Command(name = "info",
+@Command(name = "info", addMethodSubcommands = false,
         mixinStandardHelpOptions = true,
         versionProvider = VersionProvider.class,
         description = "Describe a DEM: format, size, data type, CRS, extent, cell size, no-data, min and max.",

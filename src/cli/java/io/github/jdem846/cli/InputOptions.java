@@ -9,6 +9,7 @@ import io.github.jdem846.io.DemInput;
 import java.io.IOException;
 import java.util.List;
 import picocli.CommandLine;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -20,6 +21,7 @@ import picocli.CommandLine.Spec;
  * FILE the bundled sample DEM is used; several files, a directory or a glob pattern are read as one grid
  * ({@link InputPaths}).
  */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 public final class InputOptions {
 
     @Parameters(arity = "0..*", paramLabel = "FILE",

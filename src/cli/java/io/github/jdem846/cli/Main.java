@@ -10,7 +10,7 @@ import picocli.CommandLine.Command;
  * The {@code jdem846} command line: a thin picocli front end over the library. Exit status 0 on success, 1 when an
  * input or the work fails, 2 on bad usage.
  */
-@Command(name = "jdem846",
+@Command(name = "jdem846", addMethodSubcommands = false,
         mixinStandardHelpOptions = true,
         versionProvider = VersionProvider.class,
         description = "Shaded relief from digital elevation models: hypsometric tint, hillshade and ray-traced "
@@ -71,6 +71,8 @@ public final class Main implements Runnable {
     }
 
     public static void main(String[] args) {
+        // picocli would look for Groovy on the class path (a failed class lookup) to support closures in annotations
+        System.setProperty("picocli.disable.closures", "true");
         configureLibraryLogs(java.util.Arrays.asList(args).contains("--verbose"));
         System.exit(execute(commandLine(args), args));
     }
@@ -104,20 +106,25 @@ public final class Main implements Runnable {
     }
 
     /**
-     * Apache SIS reports through java.util.logging (e.g. "SIS_DATA is not set", WKT elements it ignores); what
-     * matters of that reaches the user as our own notices, so the CLI shows SIS's records only with --verbose
-     * (level INFO, which also keeps the library from quieting them, see internal.SisLoggers). Done through the
-     * LogManager's configuration, which also holds for loggers created later.
+     * Shows Apache SIS's log records only with --verbose ({@link LibraryLogConfig}). The log manager reads that
+     * configuration when something first logs; when the JVM was given a configuration of its own, SIS's level is
+     * added to it now.
      */
     private static void configureLibraryLogs(boolean verbose) {
         String level = verbose ? "INFO" : "OFF";
+        if (System.getProperty("java.util.logging.config.class") == null
+                && System.getProperty("java.util.logging.config.file") == null) {
+            System.setProperty(LibraryLogConfig.LEVEL_PROPERTY, level);
+            System.setProperty("java.util.logging.config.class", LibraryLogConfig.class.getName());
+            return;
+        }
         try {
             java.util.logging.LogManager.getLogManager().updateConfiguration(
                     new java.io.ByteArrayInputStream(("org.apache.sis.level = " + level + "\n").getBytes(
                             java.nio.charset.StandardCharsets.ISO_8859_1)),
                     key -> (old, now) -> now != null ? now : old);
         } catch (java.io.IOException e) {
-            // keep the default configuration
+            // keep the JVM's configuration
         }
     }
 }

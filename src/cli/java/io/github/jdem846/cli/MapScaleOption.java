@@ -1,12 +1,14 @@
 package io.github.jdem846.cli;
 
 import io.github.jdem846.job.MercatorScale;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /**
  * {@code --map-scale}: measure a Web Mercator DEM's cells in the projection's metres, as gdaldem does, instead of
  * on the ground row by row ({@link MercatorScale}).
  */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 final class MapScaleOption {
 
     @Option(names = "--map-scale",

@@ -3,6 +3,7 @@ package io.github.jdem846.cli;
 import io.github.jdem846.output.ImageOutput;
 import io.github.jdem846.output.WriteOptions;
 import java.nio.file.Path;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
@@ -10,6 +11,7 @@ import picocli.CommandLine.TypeConversionException;
 import picocli.CommandLine.Spec;
 
 /** {@code -o OUT}, {@code --world-file} and {@code --cog}: where and how the picture is written (atomically). */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 public final class OutputOptions {
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT",

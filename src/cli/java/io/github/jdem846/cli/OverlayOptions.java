@@ -7,6 +7,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 
@@ -15,6 +16,7 @@ import picocli.CommandLine.Option;
  * ({@link io.github.jdem846.overlay.OverlayPainter}). The style after the last colon is only taken as a style when
  * it holds {@code key=value} pairs, so a path with a colon in it is not cut.
  */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 final class OverlayOptions {
 
     @Option(names = "--overlay", paramLabel = "FILE[:STYLE]",

@@ -11,6 +11,7 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 
@@ -18,6 +19,7 @@ import picocli.CommandLine.Option;
  * {@code --projection NAME|EPSG:CODE|FILE.prj} and {@code --central-meridian}: the map projection of the picture
  * ({@link io.github.jdem846.projection}).
  */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 final class ProjectionOptions {
 
     private static final Pattern EPSG = Pattern.compile("(?i)EPSG:(\\d{1,9})");

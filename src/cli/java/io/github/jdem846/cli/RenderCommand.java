@@ -11,7 +11,7 @@ import picocli.CommandLine.Mixin;
  * {@code jdem846 render [FILE] -o OUT.png}: the main job — hypsometric tint, hillshade and (optionally) ray-traced
  * cast shadows composed into one RGBA picture.
  */
-@Command(name = "render", mixinStandardHelpOptions = true,
+@Command(name = "render", addMethodSubcommands = false, mixinStandardHelpOptions = true,
         description = "Render a shaded-relief picture: tint × hillshade × cast shadows (the article's method).")
 public final class RenderCommand implements Callable<Integer> {
 

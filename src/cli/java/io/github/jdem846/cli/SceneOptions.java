@@ -9,6 +9,7 @@ import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.SkyViewOptions;
 import java.io.IOException;
 import java.io.PrintWriter;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
@@ -16,6 +17,7 @@ import picocli.CommandLine.Option;
  * What a shaded relief looks like, for {@code render} and {@code tiles}: the tint, the hillshade method and its
  * knobs, the cast shadows and their options, listed in this order.
  */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 public final class SceneOptions {
 
     @Mixin

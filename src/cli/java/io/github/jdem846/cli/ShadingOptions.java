@@ -1,12 +1,14 @@
 package io.github.jdem846.cli;
 
 import io.github.jdem846.shade.HillshadeOptions;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /**
  * The hillshade knobs with the original's defaults: z-factor, light multiple, intensities, spot exponent. Each value
  * is checked as it is parsed against the ranges of {@link HillshadeOptions}.
  */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 public final class ShadingOptions {
 
     @Option(names = {"-z", "--z-factor"}, paramLabel = "FACTOR", defaultValue = "1",

@@ -3,9 +3,11 @@ package io.github.jdem846.cli;
 import io.github.jdem846.shadow.ShadowAlgorithm;
 import io.github.jdem846.shadow.ShadowOptions;
 import java.io.PrintWriter;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /** {@code --soft-shadows}, {@code --curvature}, {@code --refraction} and {@code --thin-features}. */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 public final class ShadowCliOptions {
 
     @Option(names = "--soft-shadows",

@@ -14,7 +14,7 @@ import picocli.CommandLine.Option;
  * {@code jdem846 shadows FILE -o MASK.png|MASK.tif}: the cast-shadow mask, 8-bit, 0 = lit, 255 = in shadow (soft
  * shadows: 0–255 = shadowed fraction), row 0 = north, no-data cells 0.
  */
-@Command(name = "shadows", mixinStandardHelpOptions = true,
+@Command(name = "shadows", addMethodSubcommands = false, mixinStandardHelpOptions = true,
         description = "Write the ray-traced cast-shadow mask: 0 = lit, 255 = in shadow (soft: shadowed fraction).")
 public final class ShadowsCommand implements Callable<Integer> {
 

@@ -16,7 +16,7 @@ import picocli.CommandLine.Option;
  * sky (factor = (value − 1)/254), 0 = no-data, row 0 = north; with {@code --float} the factor itself as a float32
  * GeoTIFF, NaN = no-data.
  */
-@Command(name = "skyview", mixinStandardHelpOptions = true,
+@Command(name = "skyview", addMethodSubcommands = false, mixinStandardHelpOptions = true,
         description = "Write the sky-view factor (the share of the sky each cell sees, from its horizons): 8-bit "
                 + "gray, 1 = none … 255 = the whole sky, 0 = no-data.")
 public final class SkyViewCommand implements Callable<Integer> {

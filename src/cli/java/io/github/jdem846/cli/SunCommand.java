@@ -24,7 +24,7 @@ import picocli.CommandLine.Option;
  * {@code jdem846 sun}: the sun's azimuth, elevation and zenith angle for a time and place, with the day's sunrise,
  * transit and sunset (NREL SPA). Text for a person, or {@code --json}.
  */
-@Command(name = "sun",
+@Command(name = "sun", addMethodSubcommands = false,
         mixinStandardHelpOptions = true,
         sortOptions = false,
         description = {

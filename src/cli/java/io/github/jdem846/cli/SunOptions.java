@@ -3,6 +3,7 @@ package io.github.jdem846.cli;
 import io.github.jdem846.geo.LatLon;
 import io.github.jdem846.job.Sun;
 import io.github.jdem846.sun.ZonedTimeParser;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -11,6 +12,7 @@ import picocli.CommandLine.Spec;
  * The light: {@code --sun-azimuth}/{@code --sun-elevation} (the original's defaults 320° and 25°), or the real sun
  * at {@code --sun-time}, seen from the DEM's centre, from {@code --sun-at}, or per tile.
  */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 public final class SunOptions {
 
     @Spec(Spec.Target.MIXEE)

@@ -22,7 +22,7 @@ import picocli.CommandLine.Parameters;
  * {@code jdem846 tiles FILE --zoom 0-12 -o DIR|OUT.pmtiles}: a web-map tile pyramid (Web Mercator, XYZ scheme) of
  * the relief, every zoom rendered from the DEM at its own resolution, with the shading options of {@code render}.
  */
-@Command(name = "tiles", mixinStandardHelpOptions = true,
+@Command(name = "tiles", addMethodSubcommands = false, mixinStandardHelpOptions = true,
         description = "Render web-map tiles (Web Mercator, z/x/y, 256 × 256 PNG) of the relief for a range of zoom "
                 + "levels: a z/x/y.png directory, or one PMTiles archive when OUT ends in .pmtiles.")
 public final class TilesCommand implements Callable<Integer> {

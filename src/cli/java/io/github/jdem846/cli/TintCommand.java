@@ -14,7 +14,7 @@ import picocli.CommandLine.Option;
  * {@code jdem846 tint IN COLORFILE OUT}: the hypsometric/bathymetric tint alone (like
  * {@code gdaldem color-relief -alpha}); no-data is transparent.
  */
-@Command(name = "tint", mixinStandardHelpOptions = true, modelTransformer = GdaldemPositionals.Transformer.class,
+@Command(name = "tint", addMethodSubcommands = false, mixinStandardHelpOptions = true, modelTransformer = GdaldemPositionals.Transformer.class,
         description = "Write the elevation tint alone (RGBA, no-data transparent), like gdaldem color-relief -alpha.")
 public final class TintCommand implements Callable<Integer> {
 

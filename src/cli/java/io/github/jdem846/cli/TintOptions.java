@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Iterator;
 import java.util.Locale;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
@@ -16,6 +17,7 @@ import picocli.CommandLine.TypeConversionException;
 import picocli.CommandLine.Spec;
 
 /** {@code --tint NAME|FILE} with gdaldem's {@code --exact-color}/{@code --nearest-color}. */
+@Command(addMethodSubcommands = false) // no command methods to look for: a quicker start
 public final class TintOptions {
 
     @Spec(Spec.Target.MIXEE)

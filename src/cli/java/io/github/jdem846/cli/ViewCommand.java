@@ -21,7 +21,7 @@ import picocli.CommandLine.TypeConversionException;
  * {@code jdem846 view [FILE] -o OUT.png}: the shaded relief of {@code render} draped on the terrain and seen in
  * perspective ({@link ViewJob}); {@code --width}/{@code --height} are the picture's size.
  */
-@Command(name = "view", mixinStandardHelpOptions = true,
+@Command(name = "view", addMethodSubcommands = false, mixinStandardHelpOptions = true,
         description = {"Render a 3-D perspective view: the shaded relief (tint × hillshade × cast shadows) draped on "
                 + "the terrain, seen by a camera at an azimuth and elevation, optionally on the body's globe.",
             "--width and --height give the picture's size (default 1200 × 800)."},

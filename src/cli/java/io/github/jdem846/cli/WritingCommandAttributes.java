@@ -7,7 +7,7 @@ import picocli.CommandLine.Command;
  * the version, options listed in the order they are declared, and the exit status list. Mixed in, picocli adds them
  * to the command's own attributes.
  */
-@Command(versionProvider = VersionProvider.class,
+@Command(addMethodSubcommands = false, versionProvider = VersionProvider.class,
         sortOptions = false,
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:written", "1:an input could not be read or the output not written", "2:bad usage"})
