@@ -166,6 +166,19 @@ public final class Dem {
     }
 
     /**
+     * Whether every cell is known to be a finite number without looking at the cells: the statistics are known
+     * already (a reader took them on its way, or {@link #statistics()} ran) and count no no-data, with a finite
+     * min and max. False says nothing: the cells may still all be finite.
+     *
+     * @return true when every cell is finite, as far as is known for free
+     */
+    public boolean knownAllFinite() {
+        ElevationStatistics s = statistics;
+        return s != null && s.validCount() == s.totalCount() && Double.isFinite(s.min())
+                && Double.isFinite(s.max());
+    }
+
+    /**
      * The same elevations (shared, not copied) on another geometry of the same size, e.g. with another ellipsoid;
      * this DEM when {@code g} is the same object.
      *

@@ -26,8 +26,9 @@ final class FiniteWindows {
      * @param row0  first row of the rectangle
      * @param w     columns of the rectangle
      * @param h     rows of the rectangle
+     * @param allFinite every cell of the grid is known to be finite: no row is looked at
      */
-    FiniteWindows(float[] v, int width, int height, int col0, int row0, int w, int h) {
+    FiniteWindows(float[] v, int width, int height, int col0, int row0, int w, int h, boolean allFinite) {
         this.v = v;
         this.width = width;
         this.height = height;
@@ -39,7 +40,7 @@ final class FiniteWindows {
             for (int i = 0; i < h + 2; i++) {
                 final int row = row0 - 1 + i;
                 finiteRow[i] = row >= 0 && row < height
-                        && allFinite(v, row * width + first - 1, row * width + end + 1);
+                        && (allFinite || allFinite(v, row * width + first - 1, row * width + end + 1));
             }
         }
     }

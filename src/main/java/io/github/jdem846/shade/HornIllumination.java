@@ -56,7 +56,8 @@ final class HornIllumination implements IlluminationStage {
         final int width = dem.width();
         final int height = dem.height();
         final double[] win = new double[9];
-        final FiniteWindows windows = new FiniteWindows(v, width, height, col0, row0, w, h);
+        final FiniteWindows windows = new FiniteWindows(v, width, height, col0, row0, w, h,
+                dem.knownAllFinite());
         final int[] runs = new int[FiniteWindows.runsLength(w)];
         final HornRows rows = new HornRows(w, zf, le, ln, lu, shape);
         for (int r = row0; r < row0 + h; r++) {

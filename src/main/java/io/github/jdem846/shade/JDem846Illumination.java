@@ -69,7 +69,8 @@ final class JDem846Illumination implements IlluminationStage {
         final float[] v = dem.backingArray();
         final int width = dem.width();
         final int height = dem.height();
-        final FiniteWindows windows = new FiniteWindows(v, width, height, col0, row0, w, h);
+        final FiniteWindows windows = new FiniteWindows(v, width, height, col0, row0, w, h,
+                dem.knownAllFinite());
         final int[] runs = new int[FiniteWindows.runsLength(w)];
         final JDem846Rows rows = new JDem846Rows(w, k, le, ln, lu, belowHorizon, shape);
         for (int r = row0; r < row0 + h; r++) {

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.jdem846.io.DemReader;
+import io.github.jdem846.testing.SyntheticDems;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -51,5 +52,29 @@ class NoDataTest {
         assertEquals(2, dem.statistics().noDataCount());
         assertEquals(0, dem.statistics().min(), "0 is sea level, not no-data");
         assertEquals(12.5, dem.statistics().max());
+    }
+
+    @Test
+    void allFiniteIsKnownOnlyOnceTheStatisticsAreAndCountEveryCell() throws IOException {
+        Dem clean = SyntheticDems.metric(2, 2, 1, new float[] {1, 2, 3, 4});
+        assertFalse(clean.knownAllFinite(), "not known before the statistics: no pass of its own");
+        clean.statistics();
+        assertTrue(clean.knownAllFinite());
+        Dem holes = SyntheticDems.metric(2, 2, 1, new float[] {1, Float.NaN, 3, 4});
+        holes.statistics();
+        assertFalse(holes.knownAllFinite());
+        Dem infinite = SyntheticDems.metric(2, 2, 1, new float[] {1, Float.POSITIVE_INFINITY, 3, 4});
+        infinite.statistics();
+        assertFalse(infinite.knownAllFinite());
+        Files.writeString(tmp.resolve("f.hdr"), "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n"
+                + "NODATA_value -9999\nbyteorder LSBFIRST\n");
+        ByteBuffer b = ByteBuffer.allocate(16).order(ByteOrder.LITTLE_ENDIAN);
+        b.putFloat(1).putFloat(2).putFloat(3).putFloat(4);
+        Files.write(tmp.resolve("f.flt"), b.array());
+        assertTrue(DemReader.read(tmp.resolve("f.flt")).knownAllFinite(), "a reader takes the statistics");
+        b.clear();
+        b.putFloat(1).putFloat(-9999).putFloat(3).putFloat(4);
+        Files.write(tmp.resolve("f.flt"), b.array());
+        assertFalse(DemReader.read(tmp.resolve("f.flt")).knownAllFinite(), "a no-data cell");
     }
 }
