@@ -23,5 +23,6 @@ set "CACHE=%LOCALAPPDATA%\jdem846"
 if not exist "%CACHE%" mkdir "%CACHE%" 2>nul
 set CDS=-XX:+AutoCreateSharedArchive "-XX:SharedArchiveFile=%CACHE%\jdem846-%MAJOR%.jsa" -Xlog:cds=off -Xlog:cds+dynamic=off
 :run
-"%JAVA%" %CDS% %JDEM846_OPTS% -jar "%JAR%" %*
+rem core reflection through native accessors: picocli's start-up on JDK 18+ (see bin/jdem846)
+"%JAVA%" %CDS% -Djdk.reflect.useNativeAccessorOnly=true %JDEM846_OPTS% -jar "%JAR%" %*
 exit /b %ERRORLEVEL%

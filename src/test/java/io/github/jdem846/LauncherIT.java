@@ -200,6 +200,8 @@ class LauncherIT {
                 .orElseThrow(() -> new AssertionError(run.out()));
         int tier = Integer.parseInt(line.replaceAll(".*=\\s*(\\d+).*", "$1"));
         boolean fused = run.out().lines().anyMatch(l -> l.strip().equals("jdem846.kernels = fused"));
+        assertTrue(run.out().lines().anyMatch(l -> l.strip().equals("jdk.reflect.useNativeAccessorOnly = true")),
+                "core reflection through native accessors");
         assertEquals(tier == 1, fused, "fused kernels with the first tier only: " + String.join(" ", args));
         return tier;
     }
