@@ -6,9 +6,10 @@ import java.util.Arrays;
  * Raw deflate data (RFC 1951) that codes every byte as a literal: one block with its own Huffman code per
  * {@link #BLOCK_BYTES} bytes of input, or a stored block where that would be no smaller. This is zlib's
  * {@code Z_HUFFMAN_ONLY} strategy, which {@link PngWriter} uses for continuous-tone gray rows, written out in Java:
- * zlib still keeps its window and hash tables up to date in that mode and builds a code every 16 K symbols, and a
- * 4000² hillshade spent about twice as long in it as here (docs/performance.md, "Writing PNG and GeoTIFF"). The
- * bytes differ from zlib's, the data they inflate to do not; the same input gives the same bytes on every JVM.
+ * zlib still keeps its window and hash tables up to date in that mode and builds a code every 16 K symbols, and the
+ * rows of a 4000² hillshade took about three times as long in it as here (docs/performance.md, "Writing PNG and
+ * GeoTIFF"). The bytes differ from zlib's, the data they inflate to do not; the same input gives the same bytes on
+ * every JVM.
  *
  * <p>Not thread-safe: one per thread, reused from segment to segment.
  */
@@ -86,7 +87,7 @@ final class HuffmanBlocks {
         huffman.lengths(counts, MAX_BITS, lengths);
         int headerCount = runLengths();
         int orderCount = lengthCode(headerCount);
-        if (storedBits(n) <= dynamicBits(headerCount, orderCount)) {
+        if (storedBits(n) <= dynamicBits(orderCount)) {
             writeStored(data, from, n, last);
             return;
         }
@@ -124,7 +125,7 @@ final class HuffmanBlocks {
     }
 
     /** The size of the block with its own codes, in bits. */
-    private long dynamicBits(int headerCount, int orderCount) {
+    private long dynamicBits(int orderCount) {
         long total = 3 + 5 + 5 + 4 + 3L * orderCount;
         for (int s = 0; s < 19; s++) {
             total += (long) lengthCounts[s] * lengthLengths[s];

@@ -34,8 +34,9 @@ import java.util.zip.Deflater;
  * and bytes. Measured and left aside: a branch-free Paeth in the byte-wise loop (1.3 to 1.5 times faster only), and
  * scoring the filters on a quarter of each row, then writing only the chosen one (no faster on shading, whose
  * winner, Paeth, must then be computed over the whole row anyway; and it chose another filter for 298 of 643 rows of
- * Big Tujunga's shadow mask, so it changed files). Native deflate is now most of the time of a gray segment, and in
- * a one-shot command the filter runs uncompiled for its first rows: there the write phase gained about 10 %.
+ * Big Tujunga's shadow mask, so it changed files). The filter and the coding now take about the same time of a gray
+ * segment, and in a one-shot command the filter runs uncompiled for its first rows: there the write phase gained
+ * about 10 %.
  *
  * <p>Gray segments (hillshades, shadows) are coded with Huffman codes only, zlib's {@link Deflater#HUFFMAN_ONLY}
  * strategy, by {@link HuffmanBlocks} (about 3 times as fast as zlib in that mode, and as small): continuous-tone
