@@ -192,23 +192,13 @@ final class HuffmanBlocks {
                 count -= 32;
             }
         }
-        if (i < end) {
-            final int code = table[data[i] & 0xFF];
-            buffer |= (long) (code & 0xFFFF) << count;
-            count += code >>> 16;
-            if (count >= 32) {
-                target[p] = (byte) buffer;
-                target[p + 1] = (byte) (buffer >>> 8);
-                target[p + 2] = (byte) (buffer >>> 16);
-                target[p + 3] = (byte) (buffer >>> 24);
-                p += 4;
-                buffer >>>= 32;
-                count -= 32;
-            }
-        }
         bits = buffer;
         bitCount = count;
         position = p;
+        if (i < end) {
+            final int code = table[data[i] & 0xFF];
+            putBits(code & 0xFFFF, code >>> 16);
+        }
     }
 
     /**
