@@ -28,6 +28,11 @@ final class HuffmanBlocks {
     private static final int[] LENGTH_ORDER = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
 
     private final int[] counts = new int[LITERALS];
+    /** The literal counts of each block of the range {@link #count} took, and that range. */
+    private int[][] blockCounts = new int[0][];
+    private byte[] countedData;
+    private int countedFrom = -1;
+    private int countedLength = -1;
     private final int[] lengths = new int[LITERALS];
     /** Per literal: its bit-reversed code in the low 16 bits and its length above. */
     private final int[] codes = new int[LITERALS];
@@ -50,6 +55,31 @@ final class HuffmanBlocks {
     }
 
     /**
+     * Counts the bytes of {@code data[from, from + n)} block by block, for a {@link #deflate} of the same range that
+     * follows, and returns the counts of the whole range (a new array): one pass over the bytes for both.
+     *
+     * @return 256 counts, one per byte value
+     */
+    int[] count(byte[] data, int from, int n) {
+        int blocks = Math.max(1, (n + BLOCK_BYTES - 1) / BLOCK_BYTES);
+        if (blockCounts.length < blocks) {
+            blockCounts = new int[blocks][LITERALS];
+        }
+        int[] total = new int[256];
+        for (int b = 0; b < blocks; b++) {
+            int start = from + b * BLOCK_BYTES;
+            countLiterals(data, start, Math.min(BLOCK_BYTES, from + n - start), blockCounts[b]);
+            for (int v = 0; v < 256; v++) {
+                total[v] += blockCounts[b][v];
+            }
+        }
+        countedData = data;
+        countedFrom = from;
+        countedLength = n;
+        return total;
+    }
+
+    /**
      * Deflates {@code data[from, from + n)} into {@code target} from index 0 and returns the length written. The
      * data ends with the final block when {@code last}, else with an empty stored block (zlib's sync flush), which
      * leaves it on a byte boundary so that data deflated on its own may follow.
@@ -64,10 +94,17 @@ final class HuffmanBlocks {
         position = 0;
         bits = 0;
         bitCount = 0;
+        boolean counted = data == countedData && from == countedFrom && n == countedLength;
+        countedData = null;
         int end = from + n;
         for (int block = from; block < end || block == from; block += BLOCK_BYTES) {
             int length = Math.min(BLOCK_BYTES, end - block);
             boolean lastBlock = last && block + length >= end;
+            if (counted) {
+                System.arraycopy(blockCounts[(block - from) / BLOCK_BYTES], 0, counts, 0, LITERALS);
+            } else {
+                countLiterals(data, block, length, counts);
+            }
             writeBlock(data, block, length, lastBlock);
         }
         if (!last) {
@@ -82,8 +119,8 @@ final class HuffmanBlocks {
     // Small methods with one loop each: quick to compile, and no long compilation of one large method (with the
     // optimising JIT, a single method with all the loops ran uncompiled for a second on 16 million bytes).
 
+    /** One block of the literals counted in {@link #counts}. */
     private void writeBlock(byte[] data, int from, int n, boolean last) {
-        countLiterals(data, from, n);
         huffman.lengths(counts, MAX_BITS, lengths);
         int headerCount = runLengths();
         int orderCount = lengthCode(headerCount);
@@ -97,8 +134,8 @@ final class HuffmanBlocks {
         putBits(codes[END_OF_BLOCK] & 0xFFFF, codes[END_OF_BLOCK] >>> 16);
     }
 
-    private void countLiterals(byte[] data, int from, int n) {
-        final int[] c = counts;
+    /** The counts of one block's bytes, and end-of-block's 1, in {@code c}. */
+    private static void countLiterals(byte[] data, int from, int n, int[] c) {
         Arrays.fill(c, 0);
         for (int i = from; i < from + n; i++) {
             c[data[i] & 0xFF]++;

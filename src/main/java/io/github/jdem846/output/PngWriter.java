@@ -230,10 +230,21 @@ final class PngWriter implements BandEncoder {
         new PngRowFilter(segments.rowBytes(), bytesPerPixel).filter(segment, filtered);
         Adler32 adler = new Adler32();
         adler.update(filtered, 0, n);
-        int strategy = level == 0 || bytesPerPixel != 1
-                || entropyBits(filtered, n) * HUFFMAN_ONLY_RATIO < 8.0 * n ? Deflater.DEFAULT_STRATEGY
-                : Deflater.HUFFMAN_ONLY;
-        Deflated d = deflate(filtered, n, last, strategy);
+        Deflated d;
+        if (level == 0 || bytesPerPixel != 1) {
+            d = deflate(filtered, n, last);
+        } else {
+            // the counts for the entropy are the Huffman coder's, made in the same pass
+            HuffmanBlocks coder = spareCoders.poll();
+            coder = coder != null ? coder : new HuffmanBlocks();
+            if (entropyBits(coder.count(filtered, 0, n), n) * HUFFMAN_ONLY_RATIO < 8.0 * n) {
+                d = deflate(filtered, n, last);
+            } else {
+                byte[] deflated = spareDeflated.take(HuffmanBlocks.bound(n));
+                d = new Deflated(deflated, coder.deflate(filtered, 0, n, last, deflated));
+            }
+            spareCoders.offer(coder);
+        }
         spareFiltered.give(filtered);
         return new Segment(d.bytes, d.length, adler.getValue(), n, segment.rows());
     }
@@ -247,6 +258,11 @@ final class PngWriter implements BandEncoder {
         for (int i = 0; i < n; i++) {
             counts[data[i] & 0xFF]++;
         }
+        return entropyBits(counts, n);
+    }
+
+    /** {@link #entropyBits(byte[], int)} of {@code n} bytes whose values {@code counts} counts. */
+    static double entropyBits(int[] counts, int n) {
         double bits = 0;
         for (int c : counts) {
             if (c > 0) {
@@ -261,21 +277,12 @@ final class PngWriter implements BandEncoder {
     }
 
     /**
-     * {@code n} filtered bytes deflated at this writer's level with {@code strategy} (Huffman-only by
-     * {@link HuffmanBlocks}, else by zlib): ending in a sync flush, or the final block when {@code last}.
+     * {@code n} filtered bytes deflated by zlib at this writer's level, with string matching: ending in a sync
+     * flush, or the final block when {@code last}.
      */
-    private Deflated deflate(byte[] filtered, int n, boolean last, int strategy) {
-        if (strategy == Deflater.HUFFMAN_ONLY) {
-            HuffmanBlocks coder = spareCoders.poll();
-            coder = coder != null ? coder : new HuffmanBlocks();
-            byte[] deflated = spareDeflated.take(HuffmanBlocks.bound(n));
-            int length = coder.deflate(filtered, 0, n, last, deflated);
-            spareCoders.offer(coder);
-            return new Deflated(deflated, length);
-        }
+    private Deflated deflate(byte[] filtered, int n, boolean last) {
         Deflater deflater = spareDeflaters.take();
         try {
-            deflater.setStrategy(strategy);
             deflater.setInput(filtered, 0, n);
             if (last) {
                 deflater.finish();
@@ -286,7 +293,6 @@ final class PngWriter implements BandEncoder {
                 int room = deflated.length - length;
                 int k = deflater.deflate(deflated, length, room, last ? Deflater.NO_FLUSH : Deflater.SYNC_FLUSH);
                 length += k;
-                // (the first call after setStrategy only sets it and may return 0 bytes with the input untouched)
                 if (last ? deflater.finished() : k < room && deflater.needsInput()) {
                     break;
                 }

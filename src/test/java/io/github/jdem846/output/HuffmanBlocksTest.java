@@ -56,6 +56,28 @@ class HuffmanBlocksTest {
     }
 
     @Test
+    void countingFirstGivesTheHistogramAndTheSameBytes() throws Exception {
+        byte[] gray = leftDifferences(realHillshade());
+        int from = 1000;
+        int n = 3 * HuffmanBlocks.BLOCK_BYTES + 77;
+        int[] histogram = new int[256];
+        for (int i = from; i < from + n; i++) {
+            histogram[gray[i] & 0xFF]++;
+        }
+        HuffmanBlocks coder = new HuffmanBlocks();
+        byte[] alone = new byte[HuffmanBlocks.bound(n)];
+        int aloneLength = coder.deflate(gray, from, n, true, alone);
+        assertArrayEquals(histogram, coder.count(gray, from, n));
+        byte[] counted = new byte[HuffmanBlocks.bound(n)];
+        assertEquals(aloneLength, coder.deflate(gray, from, n, true, counted));
+        assertArrayEquals(Arrays.copyOf(alone, aloneLength), Arrays.copyOf(counted, aloneLength));
+        coder.count(gray, 0, 10);                        // counts of another range are not used
+        assertEquals(aloneLength, coder.deflate(gray, from, n, true, counted));
+        assertArrayEquals(Arrays.copyOf(alone, aloneLength), Arrays.copyOf(counted, aloneLength));
+        assertArrayEquals(Arrays.copyOfRange(gray, from, from + n), inflate(Arrays.copyOf(counted, aloneLength), n));
+    }
+
+    @Test
     void blockEdgesAndTinyInputs() throws Exception {
         Random random = new Random(846);
         HuffmanBlocks coder = new HuffmanBlocks();  // one coder for all: nothing of one input stays for the next
