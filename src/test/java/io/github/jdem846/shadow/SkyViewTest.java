@@ -226,6 +226,31 @@ class SkyViewTest {
     }
 
     @Test
+    void theBruteForceStopsEarlyWithoutChangingAHorizon() throws IOException {
+        // the reference stops a ray once even the highest terrain could not be steeper than its horizon so far
+        Dem volcano = DemReader.read(Path.of("testdata/dem/maungawhau-volcano_10m_nztm-approx.tif"));
+        Dem luxembourg = DemReader.read(Path.of("testdata/dem/luxembourg_srtm30s_wgs84.tif")); // no-data around
+        for (Dem dem : new Dem[] {volcano, luxembourg}) {
+            for (double scale : new double[] {1, 3}) {
+                HorizonReference early = new HorizonReference(dem, 0.25, scale);
+                HorizonReference full = HorizonReference.exhaustive(dem, 0.25, scale);
+                int compared = 0;
+                for (int r = 0; r < dem.height(); r += 3) {
+                    for (int c = 0; c < dem.width(); c += 3) {
+                        for (double az = 0; az < 360; az += 22.5) {
+                            double a = early.horizonTangent(c, r, az);
+                            assertEquals(full.horizonTangent(c, r, az), a, 0.0,
+                                    "cell " + c + ", " + r + " azimuth " + az + " scale " + scale);
+                            compared += Double.isNaN(a) ? 0 : 1;
+                        }
+                    }
+                }
+                assertTrue(compared > 1000, "valid cells compared: " + compared);
+            }
+        }
+    }
+
+    @Test
     void theSweepAgreesWithTheBruteForceSearchOnRealDems() throws IOException {
         Dem volcano = DemReader.read(Path.of("testdata/dem/maungawhau-volcano_10m_nztm-approx.tif"));
         Dem tujunga = standalone(DemReader.read(Path.of("testdata/dem/bigtujunga_srtm30m_utm11n.tif"))

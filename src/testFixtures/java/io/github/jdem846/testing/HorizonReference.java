@@ -21,6 +21,11 @@ public final class HorizonReference {
     private final double wRef;
     private final double hRef;
     private final double maxDistance;
+    /**
+     * The highest valid elevation (+∞ for {@link #exhaustive}): a ray whose rise to it is no steeper than its
+     * horizon so far can stop.
+     */
+    private final double zMax;
 
     /**
      * @param dem         the terrain
@@ -38,6 +43,19 @@ public final class HorizonReference {
      * @param maxDistance the search radius in ground metres: samples farther along the ray do not count
      */
     public HorizonReference(Dem dem, double step, double heightScale, double maxDistance) {
+        this(dem, step, heightScale, maxDistance, true);
+    }
+
+    /**
+     * A reference that marches every ray to the grid's edge (or the radius), without stopping when the highest
+     * terrain can no longer be steeper than the horizon found: the same answers, more slowly (for the test that
+     * they are the same).
+     */
+    public static HorizonReference exhaustive(Dem dem, double step, double heightScale) {
+        return new HorizonReference(dem, step, heightScale, Double.POSITIVE_INFINITY, false);
+    }
+
+    private HorizonReference(Dem dem, double step, double heightScale, double maxDistance, boolean stopEarly) {
         this.maxDistance = maxDistance;
         this.dem = dem;
         this.v = dem.backingArray();
@@ -55,6 +73,13 @@ public final class HorizonReference {
         int mid = g.placement().rootHeight() / 2 - g.placement().row();
         wRef = g.cellWidthMeters(mid);
         hRef = g.cellHeightMeters(mid);
+        double top = Double.NEGATIVE_INFINITY;
+        for (float z : v) {
+            if (z > top) {
+                top = z;
+            }
+        }
+        zMax = stopEarly ? top : Double.POSITIVE_INFINITY;
     }
 
     /** The tangent of the horizon of cell (col, row) in {@code azimuth} degrees, at least 0; NaN for no-data. */
@@ -81,8 +106,8 @@ public final class HorizonReference {
                 return best;
             }
             dist += Math.hypot(dx * cw[rowHere], dy * ch[rowHere]);
-            if (dist > maxDistance) {
-                return best;
+            if (dist > maxDistance || heightScale > 0 && (zMax - z0) * heightScale / dist <= best) {
+                return best;            // (no sample from here on can be steeper than the highest terrain)
             }
             x = xn;
             y = yn;
