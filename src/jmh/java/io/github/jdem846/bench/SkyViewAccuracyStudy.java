@@ -15,9 +15,9 @@ import java.util.concurrent.ForkJoinPool;
 /**
  * The sky-view factor of the sweep ({@link SkyView}) against the brute-force horizon search ({@link
  * HorizonReference}: rays in ⅛-cell steps on the bilinear surface) for D = 8, 16, 32, 64 on the DEMs of testdata,
- * with the sweep's run time on the whole grid (best of 5); then, at D = 32, the error against run time of the sweep and of the
- * brute force with coarser steps (1, ½, ¼ cell; best of 3). Prints two Markdown tables (docs/accuracy.md) and, with {@code
- * --plot DIR}, writes DIR/accuracy-skyview.png ({@link SkyViewAccuracyPlot}).
+ * with the sweep's run time on the whole grid (best of 5); then, at D = 32, the error against run time of the sweep
+ * and of the brute force with coarser steps (1, ½, ¼ cell; best of 3). Prints two Markdown tables
+ * (docs/accuracy.md) and, with {@code --plot DIR}, writes DIR/accuracy-skyview.png ({@link SkyViewAccuracyPlot}).
  *
  * <p>Usage: {@code SkyViewAccuracyStudy [--sample N] [--threads T] [--testdata DIR] [--plot DIR] DEM...}; the brute
  * force is evaluated on every valid cell of a DEM with at most N valid cells, else on N distinct cells drawn with
