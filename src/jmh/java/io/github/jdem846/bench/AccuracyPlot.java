@@ -10,7 +10,6 @@ import java.util.List;
 import java.util.Locale;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
-import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.Marker;
@@ -25,8 +24,6 @@ final class AccuracyPlot {
     /** Disagreement drawn for a method that agreed on every evaluated cell (log axes cannot show 0). */
     static final double ZERO_PERCENT = 1e-3;
 
-    private static final int PANEL_W = 560;
-    private static final int PANEL_H = 430;
 
     private AccuracyPlot() {
     }
@@ -100,24 +97,10 @@ final class AccuracyPlot {
 
     private static XYChart chart(String title, double xMin, double xMax, double yMin, double yMax,
                                  boolean legend) {
-        XYChart chart = new XYChartBuilder().width(PANEL_W).height(PANEL_H).title(title)
-                .xAxisTitle("Mcells/s (2 threads, log)").yAxisTitle("% cells ≠ exact (log; 0 drawn at 0.001)")
-                .build();
+        XYChart chart = LogLogPanel.create(title, "Mcells/s (2 threads, log)",
+                "% cells ≠ exact (log; 0 drawn at 0.001)", new double[] {xMin, xMax}, new double[] {yMin, yMax},
+                "0.###", "0.###");
         Styler st = chart.getStyler();
-        chart.getStyler().setXAxisLogarithmic(true);
-        chart.getStyler().setYAxisLogarithmic(true);
-        chart.getStyler().setXAxisMin(xMin);
-        chart.getStyler().setXAxisMax(xMax);
-        chart.getStyler().setYAxisMin(yMin);
-        chart.getStyler().setYAxisMax(yMax);
-        chart.getStyler().setXAxisDecimalPattern("0.###");
-        chart.getStyler().setYAxisDecimalPattern("0.###");
-        chart.getStyler().setPlotGridLinesColor(new Color(220, 220, 220));
-        st.setChartBackgroundColor(Color.WHITE);
-        st.setPlotBackgroundColor(Color.WHITE);
-        st.setChartTitleFont(new Font(Font.SANS_SERIF, Font.BOLD, 15));
-        chart.getStyler().setAxisTitleFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
-        chart.getStyler().setAxisTickLabelsFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         st.setLegendVisible(legend);
         st.setLegendPosition(Styler.LegendPosition.InsideNE);
         st.setLegendFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));

@@ -9,7 +9,6 @@ import java.util.ArrayList;
 import java.util.List;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
-import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.Marker;
@@ -24,8 +23,6 @@ final class SkyViewAccuracyPlot {
 
     /** Error drawn for a method that agreed exactly (log axes cannot show 0). */
     private static final double ZERO_ERROR = 1e-6;
-    private static final int PANEL_W = 560;
-    private static final int PANEL_H = 430;
     private static final Color SWEEP = new Color(220, 20, 20);
     private static final Color BRUTE = new Color(50, 110, 200);
 
@@ -115,25 +112,10 @@ final class SkyViewAccuracyPlot {
     }
 
     private static XYChart chart(String title, double[] x, double[] y, boolean legend) {
-        XYChart chart = new XYChartBuilder().width(PANEL_W).height(PANEL_H).title(title)
-                .xAxisTitle("Mcells/s (2 threads, log)").yAxisTitle("absolute error of the factor (log)").build();
-        Styler st = chart.getStyler();
-        chart.getStyler().setXAxisLogarithmic(true);
-        chart.getStyler().setYAxisLogarithmic(true);
-        chart.getStyler().setXAxisMin(x[0]);
-        chart.getStyler().setXAxisMax(x[1]);
-        chart.getStyler().setYAxisMin(y[0]);
-        chart.getStyler().setYAxisMax(y[1]);
-        chart.getStyler().setXAxisDecimalPattern("0.####");
-        chart.getStyler().setYAxisDecimalPattern("0.######");
-        chart.getStyler().setPlotGridLinesColor(new Color(220, 220, 220));
-        st.setChartBackgroundColor(Color.WHITE);
-        st.setPlotBackgroundColor(Color.WHITE);
-        st.setChartTitleFont(new Font(Font.SANS_SERIF, Font.BOLD, 15));
-        chart.getStyler().setAxisTitleFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
-        chart.getStyler().setAxisTickLabelsFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
-        st.setLegendVisible(legend);
-        st.setMarkerSize(10);
+        XYChart chart = LogLogPanel.create(title, "Mcells/s (2 threads, log)", "absolute error of the factor (log)",
+                x, y, "0.####", "0.######");
+        chart.getStyler().setLegendVisible(legend);
+        chart.getStyler().setMarkerSize(10);
         return chart;
     }
 
