@@ -80,15 +80,7 @@ final class AccuracyPlot {
 
     /** A panel with only the legend (series drawn outside its axes) and notes on reading the plots. */
     private static XYChart legendPanel(String dem) {
-        XYChart chart = chart(dem + ": legend", 1, 10, 1, 10, true);
-        Styler st = chart.getStyler();
-        chart.getStyler().setAxisTicksVisible(false);
-        chart.getStyler().setAxisTitlesVisible(false);
-        chart.getStyler().setPlotGridLinesVisible(false);
-        st.setPlotBorderVisible(false);
-        st.setLegendPosition(Styler.LegendPosition.InsideNW);
-        st.setLegendFont(new Font(Font.SANS_SERIF, Font.PLAIN, 14));
-        st.setLegendBorderColor(Color.WHITE);
+        XYChart chart = LogLogPanel.asLegend(chart(dem + ": legend", 1, 10, 1, 10, true), 14);
         for (StudyMethod m : plotted()) {
             style(chart.addSeries(m.label, new double[] {1e-6}, new double[] {1e-6}), m);
         }

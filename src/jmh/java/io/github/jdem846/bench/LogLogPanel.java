@@ -45,4 +45,27 @@ final class LogLogPanel {
         st.setLegendVisible(false);
         return chart;
     }
+
+    /**
+     * Makes {@code chart} a legend panel: no axes, ticks, grid or border, its series' legend at the top left in
+     * {@code fontSize}-point type (the series themselves drawn outside the axes' ranges).
+     */
+    static XYChart asLegend(XYChart chart, int fontSize) {
+        hideAxes(chart);
+        Styler st = chart.getStyler();
+        st.setLegendVisible(true);
+        st.setLegendPosition(Styler.LegendPosition.InsideNW);
+        st.setLegendFont(new Font(Font.SANS_SERIF, Font.PLAIN, fontSize));
+        st.setLegendBorderColor(Color.WHITE);
+        return chart;
+    }
+
+    /** Hides the axes, ticks, grid lines and plot border of {@code chart} (for legend and blank panels). */
+    static XYChart hideAxes(XYChart chart) {
+        chart.getStyler().setAxisTicksVisible(false);
+        chart.getStyler().setAxisTitlesVisible(false);
+        chart.getStyler().setPlotGridLinesVisible(false);
+        chart.getStyler().setPlotBorderVisible(false);
+        return chart;
+    }
 }

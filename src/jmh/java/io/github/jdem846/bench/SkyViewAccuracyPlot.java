@@ -2,7 +2,6 @@ package io.github.jdem846.bench;
 
 import java.awt.BasicStroke;
 import java.awt.Color;
-import java.awt.Font;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -10,7 +9,6 @@ import java.util.List;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYSeries;
-import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.Marker;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
@@ -54,12 +52,8 @@ final class SkyViewAccuracyPlot {
         int cols = Math.min(3, panels.size());
         int rows = (panels.size() + cols - 1) / cols;
         while (panels.size() < rows * cols) {
-            XYChart blank = chart("", x, y, false);
+            XYChart blank = LogLogPanel.hideAxes(chart("", x, y, false));
             blank.getStyler().setChartTitleVisible(false);
-            blank.getStyler().setAxisTicksVisible(false);
-            blank.getStyler().setAxisTitlesVisible(false);
-            blank.getStyler().setPlotBorderVisible(false);
-            blank.getStyler().setPlotGridLinesVisible(false);
             panels.add(blank);
         }
         Path file = images.resolve("accuracy-skyview.png");
@@ -89,15 +83,7 @@ final class SkyViewAccuracyPlot {
 
     /** A panel with only the legend (series drawn outside its axes) and what the error is measured against. */
     private static XYChart legendPanel(double[] x, double[] y) {
-        XYChart chart = chart("legend", x, y, true);
-        Styler st = chart.getStyler();
-        chart.getStyler().setAxisTicksVisible(false);
-        chart.getStyler().setAxisTitlesVisible(false);
-        chart.getStyler().setPlotGridLinesVisible(false);
-        st.setPlotBorderVisible(false);
-        st.setLegendPosition(Styler.LegendPosition.InsideNW);
-        st.setLegendFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
-        st.setLegendBorderColor(Color.WHITE);
+        XYChart chart = LogLogPanel.asLegend(chart("legend", x, y, true), 13);
         for (boolean sweep : new boolean[] {true, false}) {
             for (boolean mean : new boolean[] {true, false}) {
                 style(chart.addSeries(label(sweep, mean), new double[] {x[0] / 10}, new double[] {y[0] / 10}),
